@@ -1,0 +1,35 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <ltn/coupling/coupling_system.h>
+
+#include <string>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * How the optimality system is solved (subsection `Coupling`), and its
+   * optional Tikhonov regularization.
+   */
+  struct CouplingParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Solve @p system with the selected method. */
+    template <int dim>
+    CouplingSolution
+    solve(const CouplingSystem<dim> &system) const;
+
+    std::string  method               = "full space direct";
+    double       tikhonov_parameter   = 0;
+    double       relative_tolerance   = 1e-12;
+    unsigned int max_iterations       = 1000;
+  };
+} // namespace ltn

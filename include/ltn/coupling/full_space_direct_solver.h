@@ -1,0 +1,23 @@
+#pragma once
+
+#include <ltn/coupling/coupling_system.h>
+
+namespace ltn
+{
+  /**
+   * Solve the full-space optimality system (states, controls and Lagrange
+   * multipliers of both models at once)
+   *
+   *   [ H + alpha R   C^T ] [ x      ]   [ -B^T W r_0 ]
+   *   [ C             0   ] [ lambda ] = [  F         ]
+   *
+   * with a sparse direct solver (UMFPACK): `x = [x_n; x_l]` the states and
+   * controls, `H = B^T W B` with `B = [E, -P]`, `C = diag(A_n, A_l)` on the
+   * free rows, `r_0` the mismatch of the fixed data alone, and `R` the
+   * identity on the controls. The reported residual is
+   * `|K z - b| / |b|` of this system.
+   */
+  template <int dim>
+  CouplingSolution
+  solve_full_space_direct(const CouplingSystem<dim> &system);
+} // namespace ltn

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <ltn/scene/geometry.h>
+
+#include <utility>
+#include <vector>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /** A sparse row: (degree of freedom, coefficient) pairs. */
+  using SparseRow = std::vector<std::pair<types::global_dof_index, double>>;
+
+  /**
+   * The discrete mismatch on the overlap `Omega_b` as a quadrature:
+   *
+   *   J_h = 1/2 sum_q w_q (E_q x_n - P_q x_l)^2,
+   *
+   * where row `E_q` evaluates the nonlocal field and row `P_q` the local
+   * field at point `q`. With particles, `E_q` picks a particle and `w_q` is
+   * its volume; in 1D FEM-FEM the points are Gauss points of the common
+   * refinement of both meshes, so `J_h` is the exact L2 mismatch.
+   */
+  template <int dim>
+  struct OverlapQuadrature
+  {
+    std::vector<Point<dim>> points;
+    std::vector<double>     weights;
+    std::vector<SparseRow>  nonlocal_rows;
+    std::vector<SparseRow>  local_rows;
+  };
+
+  /**
+   * The exact L2 overlap quadrature of two 1D finite element fields: Gauss
+   * points on every interval between consecutive vertices of the two meshes
+   * (and the ends of `Omega_b`) that lies in `Omega_b`, with enough points to
+   * integrate the square of the difference exactly.
+   */
+  OverlapQuadrature<1>
+  create_overlap_quadrature_1d(const Geometry<1>   &geometry,
+                               const double         horizon,
+                               const DoFHandler<1> &nonlocal_dofs,
+                               const DoFHandler<1> &local_dofs);
+} // namespace ltn

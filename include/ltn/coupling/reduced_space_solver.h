@@ -1,0 +1,24 @@
+#pragma once
+
+#include <ltn/coupling/coupling_system.h>
+
+namespace ltn
+{
+  /**
+   * Solve the optimality system in the reduced space: the states are
+   * eliminated through each model's own solver (ModelSolver), and the normal
+   * equations of the controls `theta = [theta_n; theta_l]`,
+   *
+   *   (V^T B^T W B V + alpha I) theta = -V^T B^T W d_0,
+   *
+   * are solved by conjugate gradients; `V` is the control-to-state map and
+   * `d_0` the mismatch of the states with zero controls. Each CG iteration
+   * costs one forward and one adjoint solve per model. The iteration stops
+   * when the residual has dropped by @p relative_tolerance.
+   */
+  template <int dim>
+  CouplingSolution
+  solve_reduced_space_cg(const CouplingSystem<dim> &system,
+                         const double               relative_tolerance,
+                         const unsigned int         max_iterations);
+} // namespace ltn

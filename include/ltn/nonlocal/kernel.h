@@ -1,0 +1,76 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * A radial kernel of nonlocal diffusion, `gamma(|xi|) = c |xi|^-beta` for
+   * `|xi| <= eps` and zero outside. All kernels of LtN are of this power-law
+   * family, picked by name:
+   *
+   * | name               | beta        |
+   * |--------------------|-------------|
+   * | `constant`         | 0           |
+   * | `inverse distance` | 1           |
+   * | `fractional`       | dim + 2 s   |
+   *
+   * The scale `c` is fixed by the normalization of the design,
+   * `integral over B_eps(0) of gamma(|xi|) xi_1^2 dxi = 1`, i.e.
+   * `c = dim (dim + 2 - beta) / (|S^{dim-1}| eps^{dim + 2 - beta})`, so that
+   * `L u = 2 int (u(y) - u(x)) gamma dy` equals the Laplacian on every
+   * polynomial of degree <= 3 and tends to it as `eps -> 0`.
+   */
+  class Kernel
+  {
+  public:
+    /** Declare the kernel's parameters in the current subsection. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    Kernel(const std::string &name,
+           const double       fractional_order,
+           const unsigned int dim,
+           const double       horizon);
+
+    /** `gamma(r)` for `0 < r <= eps`, zero beyond the horizon. */
+    double
+    value(const double r) const;
+
+    /** The exponent `beta` of `gamma = c r^-beta`. */
+    double
+    exponent() const;
+
+    /** The scale `c` of `gamma = c r^-beta`. */
+    double
+    scale() const;
+
+    /** The horizon `eps`. */
+    double
+    horizon() const;
+
+    /**
+     * The symbol of `L` on plane waves: `L e^{i k.x} = sigma(k) e^{i k.x}`
+     * with `sigma(k) = 2 int_{B_eps} gamma(|xi|) (cos(k.xi) - 1) dxi`, for a
+     * wave number `k = |k|`. Summed from its power series, which converges
+     * for every `k eps` and is accurate to round-off for `k eps` up to about
+     * 30 (checked on input).
+     */
+    double
+    plane_wave_symbol(const double wave_number) const;
+
+    /** The surface area of the unit sphere in @p dim dimensions. */
+    static double
+    unit_sphere_area(const unsigned int dim);
+
+  private:
+    unsigned int dim;
+    double       eps;
+    double       beta;
+    double       c;
+  };
+} // namespace ltn

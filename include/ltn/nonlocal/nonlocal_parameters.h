@@ -1,0 +1,40 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <ltn/nonlocal/kernel.h>
+
+#include <string>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * The parameters of the nonlocal model (subsection `Nonlocal model`): its
+   * kernel, its horizon (fixed, or a multiple of the mesh size for studies
+   * with `eps = m h -> 0`), and the degree of its discretization.
+   */
+  struct NonlocalParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** The horizon at mesh size @p h. */
+    double
+    horizon(const double h) const;
+
+    /** The kernel at mesh size @p h, for a @p dim dimensional model. */
+    Kernel
+    kernel(const unsigned int dim, const double h) const;
+
+    std::string  kernel_name;
+    double       fractional_order = 0.5;
+    double       fixed_horizon    = 0;
+    double       horizon_ratio    = 0;
+    unsigned int degree           = 1;
+  };
+} // namespace ltn

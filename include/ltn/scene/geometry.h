@@ -1,0 +1,125 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <vector>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /** An axis-aligned box `[lower, upper]`. */
+  template <int dim>
+  struct Box
+  {
+    Point<dim> lower;
+    Point<dim> upper;
+
+    /** Is @p p in the closed box, up to a tolerance? */
+    bool
+    contains(const Point<dim> &p, const double tolerance = 0) const;
+
+    /** Is @p p in the open box, at least @p tolerance from its faces? */
+    bool
+    contains_strictly(const Point<dim> &p, const double tolerance = 0) const;
+
+    /** Euclidean distance from @p p to the box (zero inside). */
+    double
+    distance(const Point<dim> &p) const;
+  };
+
+  /**
+   * The tag of a point in a scene, written into the output so that ParaView
+   * shows the regions: the nonlocal region `Omega_n`, its physical collar
+   * (outside the body, volume constraint), its control collar (inside the
+   * body, virtual control `theta_n`), the overlap `Omega_b` where the mismatch
+   * is measured, and the rest of the local region.
+   */
+  enum class Region : unsigned int
+  {
+    nonlocal        = 0,
+    physical_collar = 1,
+    control_collar  = 2,
+    overlap         = 3,
+    local           = 4
+  };
+
+  /**
+   * The layout of a scene (section 3 of the design): the body `D`, the
+   * nonlocal region `Omega_n` (a box inside `D`), and the overlap width. The
+   * rest is derived: the local region `Omega_l` is `D` minus the interior of
+   * `Omega_n` shrunk by the overlap width on every face of `Omega_n` that lies
+   * inside `D`; the collar of `Omega_n` (points within the interaction range)
+   * is physical outside `D` and a control collar inside; `Omega_b` is
+   * `Omega_l` intersected with `Omega_n` and its control collar; `Gamma_c` is
+   * the part of the boundary of `Omega_l` inside `Omega_n`.
+   *
+   * Faces of a box are numbered as in deal.II's colorized meshes: `2 d` is the
+   * lower face in direction `d`, `2 d + 1` the upper one; users name them
+   * `x-`, `x+`, `y-`, `y+`, `z-`, `z+`.
+   */
+  template <int dim>
+  class Geometry
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Check that the layout can be discretized with mesh size @p h (the
+     * coarsest of a study) and interaction range @p interaction_range (the
+     * largest horizon of a study): an InputError names the parameter at
+     * fault otherwise.
+     */
+    void
+    validate(const double h, const double interaction_range) const;
+
+    /** Does face @p face of `Omega_n` lie on the boundary of the body? */
+    bool
+    nonlocal_face_on_body_boundary(const unsigned int face) const;
+
+    /** `Omega_n` shrunk by the overlap width on its faces inside the body. */
+    Box<dim>
+    shrunk_nonlocal_region() const;
+
+    /** Is @p p in the (closed) local region `Omega_l`? */
+    bool
+    in_local_region(const Point<dim> &p) const;
+
+    /**
+     * Is @p p in the overlap `Omega_b = Omega_l ∩ (Omega_n ∪ control
+     * collar)`, for interaction range @p range?
+     */
+    bool
+    in_overlap(const Point<dim> &p, const double range) const;
+
+    /** The region tag of a point of the nonlocal discretization. */
+    Region
+    nonlocal_region_of(const Point<dim> &p, const double range) const;
+
+    /** The region tag of a point of the local discretization. */
+    Region
+    local_region_of(const Point<dim> &p, const double range) const;
+
+    /** "x-", "x+", ... for face numbers 0, 1, ... */
+    static std::string
+    face_name(const unsigned int face);
+
+    /** The face number of a name "x-", "x+", ...; throws on others. */
+    static unsigned int
+    face_number(const std::string &name, const std::string &parameter);
+
+    /** A tolerance for geometric comparisons, relative to the body size. */
+    double
+    tolerance() const;
+
+    Box<dim> body;
+    Box<dim> nonlocal_region;
+    double   overlap_width = 0;
+  };
+} // namespace ltn

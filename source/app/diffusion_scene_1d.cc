@@ -1,0 +1,257 @@
+#include <deal.II/base/timer.h>
+
+#include <ltn/app/diffusion_scene_1d.h>
+#include <ltn/base/field_errors.h>
+#include <ltn/base/input_error.h>
+#include <ltn/coupling/overlap_quadrature.h>
+#include <ltn/nonlocal/nonlocal_weak_form_1d.h>
+#include <ltn/output/field_output.h>
+
+#include <iomanip>
+
+namespace ltn
+{
+  void
+  DiffusionScene1D::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "1",
+                      Patterns::Integer(1, 3),
+                      "Space dimension of the scene.");
+    Geometry<1>::declare_parameters(prm);
+    NonlocalParameters::declare_parameters(prm);
+    PoissonProblem<1>::Parameters::declare_parameters(prm);
+    ProblemData::declare_parameters(prm);
+    Discretization::declare_parameters(prm);
+    CouplingParameters::declare_parameters(prm);
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory",
+                        "",
+                        Patterns::Anything(),
+                        "Where the run writes its files. Empty: "
+                        "output/<scene name>. The command line's "
+                        "--output-dir takes precedence.");
+      prm.declare_entry("Write VTU",
+                        "true",
+                        Patterns::Bool(),
+                        "Write the fields of every level as VTU files.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  DiffusionScene1D::DiffusionScene1D(ParameterHandler  &prm,
+                                     const std::string &scene_name)
+    : scene_name(scene_name)
+  {
+    const unsigned int dim = prm.get_integer("Dimension");
+    check_input(dim == 1,
+                "Dimension",
+                std::to_string(dim),
+                "this version of LtN runs 1D scenes (the particle "
+                "discretization for 2D and 3D is not available yet)");
+    geometry.parse_parameters(prm);
+    nonlocal_parameters.parse_parameters(prm);
+    local_parameters.parse_parameters(prm);
+    problem_data.parse_parameters(prm);
+    discretization.parse_parameters(prm);
+    coupling_parameters.parse_parameters(prm);
+    prm.enter_subsection("Output");
+    output_directory = prm.get("Directory");
+    write_vtu        = prm.get_bool("Write VTU");
+    prm.leave_subsection();
+
+    const double h0 = discretization.mesh_size(0);
+    // The largest horizon of the study is on the coarsest level.
+    geometry.validate(h0, nonlocal_parameters.horizon(h0));
+
+    // Nonlocal Neumann conditions cannot be prescribed: where Omega_n touches
+    // the body's boundary, its collar needs the volume constraint.
+    for (unsigned int face = 0; face < 2; ++face)
+      check_input(!geometry.nonlocal_face_on_body_boundary(face) ||
+                    local_parameters.dirichlet_faces.count(face) == 1,
+                  "Local model/Dirichlet boundaries",
+                  Geometry<1>::face_name(face) + " missing",
+                  "the nonlocal region touches face " +
+                    Geometry<1>::face_name(face) +
+                    " of the body, whose collar needs the volume constraint: "
+                    "list it among the Dirichlet boundaries (put Neumann "
+                    "conditions on faces of the local region only)");
+
+    for (unsigned int level = 0; level < discretization.n_levels; ++level)
+      {
+        const double h = discretization.mesh_size(level);
+        problem_data.functions<1>(nonlocal_parameters.kernel(1, h), h);
+      }
+  }
+
+
+
+  RunSummary
+  DiffusionScene1D::run(const std::string  &output_directory,
+                        ConditionalOStream &out)
+  {
+    Timer total_timer;
+    solutions.clear();
+
+    RunSummary summary;
+    summary.scene = scene_name;
+    summary.dim   = 1;
+    summary.model = "diffusion";
+
+    std::vector<std::pair<double, std::string>> nonlocal_files, local_files;
+
+    for (unsigned int level = 0; level < discretization.n_levels; ++level)
+      {
+        const double h      = discretization.mesh_size(level);
+        const Kernel kernel = nonlocal_parameters.kernel(1, h);
+        const double eps    = kernel.horizon();
+        const auto   data   = problem_data.functions<1>(kernel, h);
+
+        ConditionalOStream silent(out.get_stream(), false);
+        TimerOutput timer(silent, TimerOutput::never, TimerOutput::wall_times);
+        LevelRecord record;
+        record.h       = h;
+        record.horizon = eps;
+
+        timer.enter_subsection("setup meshes");
+        NonlocalWeakForm1D nonlocal(geometry,
+                                    kernel,
+                                    nonlocal_parameters.degree,
+                                    h);
+        PoissonProblem<1>  local(geometry, local_parameters, h);
+        timer.leave_subsection();
+
+        timer.enter_subsection("assemble nonlocal");
+        nonlocal.assemble(*data.nonlocal_rhs, *data.volume_constraint_data);
+        timer.leave_subsection();
+
+        timer.enter_subsection("assemble local");
+        local.assemble(*data.local_rhs,
+                       *data.boundary_data,
+                       *data.boundary_gradient);
+        timer.leave_subsection();
+
+        timer.enter_subsection("assemble coupling");
+        const OverlapQuadrature<1> overlap = create_overlap_quadrature_1d(
+          geometry, eps, nonlocal.get_dof_handler(), local.get_dof_handler());
+        const CouplingSystem<1> system(nonlocal.get_model(),
+                                       local.get_model(),
+                                       overlap,
+                                       coupling_parameters.tikhonov_parameter);
+        timer.leave_subsection();
+
+        timer.enter_subsection("solve");
+        solutions.push_back(coupling_parameters.solve(system));
+        timer.leave_subsection();
+        const CouplingSolution &solution = solutions.back();
+
+        timer.enter_subsection("postprocess");
+        record.n_nonlocal_dofs = nonlocal.get_dof_handler().n_dofs();
+        record.n_local_dofs    = local.get_dof_handler().n_dofs();
+        record.n_controls      = system.n_controls();
+        record.solver_method   = coupling_parameters.method;
+        record.iterations      = solution.iterations;
+        record.residual        = solution.residual;
+        record.mismatch_J = system.objective(solution.fields[nonlocal_model],
+                                             solution.fields[local_model]);
+        if (data.exact_solution)
+          {
+            const auto &region = geometry.nonlocal_region;
+            const auto  tol    = geometry.tolerance();
+            record.has_errors  = true;
+            record.nonlocal_errors =
+              field_errors<1>(nonlocal.get_dof_handler(),
+                              solution.fields[nonlocal_model],
+                              *data.exact_solution,
+                              [&](const Point<1> &p) {
+                                return region.contains_strictly(p, tol);
+                              });
+            record.local_errors = field_errors<1>(
+              local.get_dof_handler(),
+              solution.fields[local_model],
+              *data.exact_solution,
+              [](const Point<1> &) { return true; });
+            record.coupled_errors = record.nonlocal_errors;
+            record.coupled_errors.add(field_errors<1>(
+              local.get_dof_handler(),
+              solution.fields[local_model],
+              *data.exact_solution,
+              [&](const Point<1> &p) { return !region.contains(p, tol); }));
+          }
+        timer.leave_subsection();
+
+        if (!output_directory.empty() && write_vtu)
+          {
+            timer.enter_subsection("output");
+            const std::string suffix =
+              "_level-" + Utilities::int_to_string(level, 2) + ".vtu";
+            std::vector<Region> local_regions;
+            for (const auto &p : local.get_support_points())
+              local_regions.push_back(geometry.local_region_of(p, eps));
+            write_field_vtu<1>(nonlocal.get_dof_handler(),
+                               solution.fields[nonlocal_model],
+                               data.exact_solution.get(),
+                               nonlocal.dof_regions(),
+                               output_directory + "/nonlocal_field" + suffix);
+            write_field_vtu<1>(local.get_dof_handler(),
+                               solution.fields[local_model],
+                               data.exact_solution.get(),
+                               local_regions,
+                               output_directory + "/local_field" + suffix);
+            nonlocal_files.emplace_back(level, "nonlocal_field" + suffix);
+            local_files.emplace_back(level, "local_field" + suffix);
+            write_level_collection(output_directory + "/nonlocal_field.pvd",
+                                   nonlocal_files);
+            write_level_collection(output_directory + "/local_field.pvd",
+                                   local_files);
+            timer.leave_subsection();
+          }
+
+        for (const std::string phase : {"setup meshes",
+                                        "assemble nonlocal",
+                                        "assemble local",
+                                        "assemble coupling",
+                                        "solve",
+                                        "postprocess",
+                                        "output"})
+          {
+            const auto times =
+              timer.get_summary_data(TimerOutput::total_wall_time);
+            const auto entry = times.find(phase);
+            record.timings.emplace_back(phase,
+                                        entry == times.end() ? 0. :
+                                                               entry->second);
+          }
+
+        out << "level " << level << ": h = " << h << ", eps = " << eps
+            << ", nonlocal dofs = " << record.n_nonlocal_dofs
+            << ", local dofs = " << record.n_local_dofs
+            << ", controls = " << record.n_controls
+            << ", iterations = " << record.iterations
+            << ", J = " << std::scientific << std::setprecision(3)
+            << record.mismatch_J << std::defaultfloat << std::endl;
+        summary.levels.push_back(record);
+      }
+    summary.total_time = total_timer.wall_time();
+    return summary;
+  }
+
+
+
+  const std::vector<CouplingSolution> &
+  DiffusionScene1D::get_solutions() const
+  {
+    return solutions;
+  }
+
+
+
+  const std::string &
+  DiffusionScene1D::get_output_directory() const
+  {
+    return output_directory;
+  }
+} // namespace ltn

@@ -1,0 +1,147 @@
+// ltn: the command-line front end of LtN. It parses the command line, reads
+// the scene, and hands everything else to the library.
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <ltn/app/diffusion_scene_1d.h>
+#include <ltn/app/parameter_reading.h>
+#include <ltn/base/input_error.h>
+#include <ltn/base/memory.h>
+#include <ltn/output/console_table.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+namespace
+{
+  const char *usage =
+    "usage: ltn SCENE.prm [--set \"Subsection/.../name=value\"]... "
+    "[--output-dir DIR]\n"
+    "       ltn --print-parameters\n";
+
+  struct CommandLine
+  {
+    std::string              scene_file;
+    std::vector<std::string> sets;
+    std::string              output_directory;
+    bool                     print_parameters = false;
+  };
+
+  CommandLine
+  parse_command_line(const int argc, char **argv)
+  {
+    CommandLine command_line;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string argument = argv[i];
+        const auto        next     = [&]() {
+          ltn::check_input(i + 1 < argc,
+                           argument,
+                           "",
+                           "a value after " + argument);
+          return std::string(argv[++i]);
+        };
+        if (argument == "--print-parameters")
+          command_line.print_parameters = true;
+        else if (argument == "--set")
+          command_line.sets.push_back(next());
+        else if (argument == "--output-dir")
+          command_line.output_directory = next();
+        else if (argument == "--help" || argument == "-h")
+          {
+            std::cout << usage;
+            std::exit(0);
+          }
+        else if (argument.rfind("--", 0) == 0 ||
+                 !command_line.scene_file.empty())
+          throw ltn::InputError("command line",
+                                argument,
+                                std::string("the arguments of\n") + usage);
+        else
+          command_line.scene_file = argument;
+      }
+    ltn::check_input(command_line.print_parameters ||
+                       !command_line.scene_file.empty(),
+                     "command line",
+                     "",
+                     std::string("a scene file\n") + usage);
+    return command_line;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  using namespace dealii;
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool         root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  ConditionalOStream pcout(std::cout, root);
+
+  try
+    {
+      const CommandLine command_line = parse_command_line(argc, argv);
+      ParameterHandler  prm;
+      ltn::declare_all_parameters(prm);
+      if (command_line.print_parameters)
+        {
+          if (root)
+            prm.print_parameters(std::cout, ParameterHandler::PRM);
+          return 0;
+        }
+
+      ltn::read_parameters(prm, command_line.scene_file, command_line.sets);
+      const std::string scene_name =
+        std::filesystem::path(command_line.scene_file).stem().string();
+      ltn::DiffusionScene1D scene(prm, scene_name);
+
+      // Everything is validated; only now is anything written.
+      std::string output_directory = command_line.output_directory;
+      if (output_directory.empty())
+        output_directory = scene.get_output_directory();
+      if (output_directory.empty())
+        output_directory = "output/" + scene_name;
+      if (root)
+        {
+          std::filesystem::create_directories(output_directory);
+          std::ofstream used(output_directory + "/used_parameters.prm");
+          prm.print_parameters(used, ParameterHandler::PRM);
+        }
+      MPI_Barrier(MPI_COMM_WORLD);
+
+      pcout << "LtN scene '" << scene_name << "'" << std::endl;
+      ltn::RunSummary summary =
+        scene.run(root ? output_directory : std::string(), pcout);
+      summary.memory_mb = ltn::peak_memory_mb(MPI_COMM_WORLD);
+
+      if (root)
+        {
+          std::ofstream json(output_directory + "/summary.json");
+          summary.to_json().write(json);
+          json << '\n';
+          std::cout << '\n';
+          ltn::print_convergence_table(summary, std::cout);
+          std::cout << "\nTotal wall time " << summary.total_time
+                    << " s, peak memory " << summary.memory_mb << " MB\n"
+                    << "Output written to " << output_directory << "/"
+                    << std::endl;
+        }
+    }
+  catch (const ltn::InputError &error)
+    {
+      if (root)
+        std::cerr << "ltn: error: " << error.what() << std::endl;
+      return 2;
+    }
+  catch (const std::exception &error)
+    {
+      if (root)
+        std::cerr << "ltn: failed: " << error.what() << std::endl;
+      return 1;
+    }
+  return 0;
+}

@@ -1,0 +1,100 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <ltn/app/diffusion_scene_1d.h>
+#include <ltn/app/parameter_reading.h>
+#include <ltn/base/input_error.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace ltn
+{
+  void
+  declare_all_parameters(ParameterHandler &prm)
+  {
+    DiffusionScene1D::declare_parameters(prm);
+  }
+
+
+
+  namespace
+  {
+    /** The "additional information" of a deal.II exception, on one line. */
+    std::string
+    short_message(const std::exception &error)
+    {
+      std::ostringstream message;
+      if (const auto *deal_error = dynamic_cast<const ExceptionBase *>(&error))
+        deal_error->print_info(message);
+      else
+        message << error.what();
+      std::string text = message.str();
+      for (char &c : text)
+        if (c == '\n')
+          c = ' ';
+      return Utilities::trim(text);
+    }
+  } // namespace
+
+
+
+  void
+  read_parameters(ParameterHandler               &prm,
+                  const std::string              &filename,
+                  const std::vector<std::string> &sets)
+  {
+    check_input(std::ifstream(filename).good(),
+                "scene file",
+                filename,
+                "a readable .prm file");
+    try
+      {
+        prm.parse_input(filename);
+      }
+    catch (const std::exception &error)
+      {
+        throw InputError("in " + filename,
+                         short_message(error),
+                         "every line must set a declared parameter to a "
+                         "value its pattern accepts; `ltn "
+                         "--print-parameters` lists them all");
+      }
+
+    for (const std::string &assignment : sets)
+      {
+        const auto equals = assignment.find('=');
+        check_input(equals != std::string::npos,
+                    "--set",
+                    assignment,
+                    "\"Subsection/.../name=value\"");
+        std::vector<std::string> path = Utilities::split_string_list(
+          Utilities::trim(assignment.substr(0, equals)), '/');
+        const std::string value =
+          Utilities::trim(assignment.substr(equals + 1));
+        const std::string name = path.back();
+        path.pop_back();
+        check_input(path.empty() || prm.subsection_path_exists(path),
+                    "--set",
+                    assignment,
+                    "the subsection path must exist; `ltn "
+                    "--print-parameters` lists them all");
+        for (const std::string &subsection : path)
+          prm.enter_subsection(subsection);
+        try
+          {
+            prm.set(name, value);
+          }
+        catch (const std::exception &error)
+          {
+            for (std::size_t i = 0; i < path.size(); ++i)
+              prm.leave_subsection();
+            throw InputError(assignment.substr(0, equals),
+                             value,
+                             short_message(error));
+          }
+        for (std::size_t i = 0; i < path.size(); ++i)
+          prm.leave_subsection();
+      }
+  }
+} // namespace ltn

@@ -1,0 +1,85 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <ltn/base/field_errors.h>
+
+#include <cmath>
+
+namespace ltn
+{
+  void
+  ErrorNorms::add(const ErrorNorms &other)
+  {
+    l2_squared += other.l2_squared;
+    linf = std::max(linf, other.linf);
+  }
+
+
+
+  double
+  ErrorNorms::l2() const
+  {
+    return std::sqrt(l2_squared);
+  }
+
+
+
+  template <int dim>
+  ErrorNorms
+  field_errors(const DoFHandler<dim>                           &dof_handler,
+               const Vector<double>                            &field,
+               const Function<dim>                             &exact,
+               const std::function<bool(const Point<dim> &)> &in_region)
+  {
+    const auto         &fe = dof_handler.get_fe();
+    const QGauss<dim>   l2_rule(fe.degree + 3);
+    const QIterated<dim> max_rule(QTrapezoid<1>(), 4 * fe.degree);
+    FEValues<dim>       l2_values(fe,
+                            l2_rule,
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
+    FEValues<dim> max_values(fe, max_rule, update_values |
+                                             update_quadrature_points);
+    std::vector<double> values_at_l2(l2_rule.size()),
+      values_at_max(max_rule.size());
+
+    ErrorNorms errors;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (in_region(cell->center()))
+        {
+          l2_values.reinit(cell);
+          l2_values.get_function_values(field, values_at_l2);
+          for (unsigned int q = 0; q < l2_rule.size(); ++q)
+            {
+              const double e =
+                values_at_l2[q] - exact.value(l2_values.quadrature_point(q));
+              errors.l2_squared += e * e * l2_values.JxW(q);
+            }
+          max_values.reinit(cell);
+          max_values.get_function_values(field, values_at_max);
+          for (unsigned int q = 0; q < max_rule.size(); ++q)
+            errors.linf = std::max(
+              errors.linf,
+              std::abs(values_at_max[q] -
+                       exact.value(max_values.quadrature_point(q))));
+        }
+    return errors;
+  }
+
+  template ErrorNorms
+  field_errors(const DoFHandler<1> &,
+               const Vector<double> &,
+               const Function<1> &,
+               const std::function<bool(const Point<1> &)> &);
+  template ErrorNorms
+  field_errors(const DoFHandler<2> &,
+               const Vector<double> &,
+               const Function<2> &,
+               const std::function<bool(const Point<2> &)> &);
+  template ErrorNorms
+  field_errors(const DoFHandler<3> &,
+               const Vector<double> &,
+               const Function<3> &,
+               const std::function<bool(const Point<3> &)> &);
+} // namespace ltn

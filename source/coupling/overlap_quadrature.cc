@@ -1,0 +1,82 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/mapping_q1.h>
+
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+
+#include <ltn/coupling/overlap_quadrature.h>
+
+#include <algorithm>
+
+namespace ltn
+{
+  OverlapQuadrature<1>
+  create_overlap_quadrature_1d(const Geometry<1>   &geometry,
+                               const double         horizon,
+                               const DoFHandler<1> &nonlocal_dofs,
+                               const DoFHandler<1> &local_dofs)
+  {
+    std::vector<double> breaks = {geometry.nonlocal_region.lower[0] - horizon,
+                                  geometry.nonlocal_region.upper[0] + horizon};
+    for (const auto *dofs : {&nonlocal_dofs, &local_dofs})
+      for (const auto &cell : dofs->active_cell_iterators())
+        for (const auto v : cell->vertex_indices())
+          breaks.push_back(cell->vertex(v)[0]);
+    std::sort(breaks.begin(), breaks.end());
+    const double tol = geometry.tolerance();
+    breaks.erase(std::unique(breaks.begin(),
+                             breaks.end(),
+                             [&](const double a, const double b) {
+                               return b - a <= tol;
+                             }),
+                 breaks.end());
+
+    const unsigned int degree =
+      std::max(nonlocal_dofs.get_fe().degree, local_dofs.get_fe().degree);
+    const QGauss<1>      rule(degree + 1);
+    const MappingQ1<1>   mapping;
+    GridTools::Cache<1>  nonlocal_cache(nonlocal_dofs.get_triangulation(),
+                                       mapping);
+    GridTools::Cache<1>  local_cache(local_dofs.get_triangulation(), mapping);
+
+    const auto evaluation_row = [&](const GridTools::Cache<1> &cache,
+                                    const DoFHandler<1>       &dofs,
+                                    const Point<1>            &point) {
+      const auto found =
+        GridTools::find_active_cell_around_point(cache, point);
+      const typename DoFHandler<1>::active_cell_iterator cell(
+        &dofs.get_triangulation(),
+        found.first->level(),
+        found.first->index(),
+        &dofs);
+      std::vector<types::global_dof_index> indices(
+        dofs.get_fe().n_dofs_per_cell());
+      cell->get_dof_indices(indices);
+      SparseRow row;
+      for (unsigned int i = 0; i < indices.size(); ++i)
+        row.emplace_back(indices[i],
+                         dofs.get_fe().shape_value(i, found.second));
+      return row;
+    };
+
+    OverlapQuadrature<1> overlap;
+    for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
+      {
+        const double a = breaks[k], b = breaks[k + 1];
+        if (!geometry.in_overlap(Point<1>(0.5 * (a + b)), horizon))
+          continue;
+        for (unsigned int q = 0; q < rule.size(); ++q)
+          {
+            const Point<1> point(a + (b - a) * rule.point(q)[0]);
+            overlap.points.push_back(point);
+            overlap.weights.push_back((b - a) * rule.weight(q));
+            overlap.nonlocal_rows.push_back(
+              evaluation_row(nonlocal_cache, nonlocal_dofs, point));
+            overlap.local_rows.push_back(
+              evaluation_row(local_cache, local_dofs, point));
+          }
+      }
+    return overlap;
+  }
+} // namespace ltn

@@ -1,0 +1,75 @@
+#include <ltn/base/input_error.h>
+#include <ltn/nonlocal/nonlocal_parameters.h>
+
+namespace ltn
+{
+  void
+  NonlocalParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Nonlocal model");
+    {
+      Kernel::declare_parameters(prm);
+      prm.declare_entry("Horizon",
+                        "0.125",
+                        Patterns::Double(),
+                        "The horizon eps: the radius of the kernel's support "
+                        "(length units). Must be positive. Ignored when "
+                        "`Horizon to mesh size ratio` is positive.");
+      prm.declare_entry("Horizon to mesh size ratio",
+                        "0",
+                        Patterns::Double(0),
+                        "If positive, the horizon is this multiple m of the "
+                        "mesh size of each level, eps = m h, so that a "
+                        "refinement study drives eps -> 0 (asymptotic "
+                        "compatibility). Zero keeps `Horizon` fixed.");
+      prm.declare_entry("Finite element degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Degree of the continuous finite elements of the 1D "
+                        "nonlocal weak form.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  NonlocalParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Nonlocal model");
+    {
+      kernel_name      = prm.get("Kernel");
+      fractional_order = prm.get_double("Fractional order");
+      fixed_horizon    = prm.get_double("Horizon");
+      horizon_ratio    = prm.get_double("Horizon to mesh size ratio");
+      degree           = prm.get_integer("Finite element degree");
+      check_input(horizon_ratio > 0 || fixed_horizon > 0,
+                  "Nonlocal model/Horizon",
+                  to_string(fixed_horizon),
+                  "the horizon must be positive");
+      check_input(kernel_name != "fractional" ||
+                    (fractional_order > 0 && fractional_order < 1),
+                  "Nonlocal model/Fractional order",
+                  to_string(fractional_order),
+                  "the fractional kernel needs an order s strictly between 0 "
+                  "and 1");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  double
+  NonlocalParameters::horizon(const double h) const
+  {
+    return (horizon_ratio > 0) ? horizon_ratio * h : fixed_horizon;
+  }
+
+
+
+  Kernel
+  NonlocalParameters::kernel(const unsigned int dim, const double h) const
+  {
+    return Kernel(kernel_name, fractional_order, dim, horizon(h));
+  }
+} // namespace ltn
