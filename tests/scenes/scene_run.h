@@ -1,0 +1,54 @@
+#pragma once
+
+// Run a scene of parameter_files/ in-process, with --set style overrides,
+// and hand back its summary and solutions.
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <ltn/app/diffusion_scene_1d.h>
+#include <ltn/app/parameter_reading.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+struct SceneRun
+{
+  ltn::RunSummary                    summary;
+  std::vector<ltn::CouplingSolution> solutions;
+};
+
+inline SceneRun
+run_scene(const std::string              &scene,
+          const std::vector<std::string> &sets = {})
+{
+  dealii::ParameterHandler prm;
+  ltn::declare_all_parameters(prm);
+  ltn::read_parameters(prm,
+                       std::string(LTN_SOURCE_DIR) + "/parameter_files/" +
+                         scene + ".prm",
+                       sets);
+  ltn::DiffusionScene1D       runner(prm, scene);
+  dealii::ConditionalOStream  quiet(std::cout, false);
+  SceneRun                    run;
+  run.summary   = runner.run("", quiet);
+  run.solutions = runner.get_solutions();
+  return run;
+}
+
+/** max_i |a_i - b_i| / max_i |b_i| over both fields of two solutions. */
+inline double
+relative_difference(const ltn::CouplingSolution &a,
+                    const ltn::CouplingSolution &b)
+{
+  double difference = 0, scale = 0;
+  for (const unsigned int k : {0u, 1u})
+    for (std::size_t i = 0; i < a.fields[k].size(); ++i)
+      {
+        difference =
+          std::max(difference, std::abs(a.fields[k][i] - b.fields[k][i]));
+        scale = std::max(scale, std::abs(b.fields[k][i]));
+      }
+  return difference / scale;
+}
