@@ -169,11 +169,11 @@ namespace ltn
                               [&](const Point<1> &p) {
                                 return region.contains_strictly(p, tol);
                               });
-            record.local_errors = field_errors<1>(
-              local.get_dof_handler(),
-              solution.fields[local_model],
-              *data.exact_solution,
-              [](const Point<1> &) { return true; });
+            record.local_errors =
+              field_errors<1>(local.get_dof_handler(),
+                              solution.fields[local_model],
+                              *data.exact_solution,
+                              [](const Point<1> &) { return true; });
             record.coupled_errors = record.nonlocal_errors;
             record.coupled_errors.add(field_errors<1>(
               local.get_dof_handler(),

@@ -79,7 +79,7 @@ main(int argc, char **argv)
 {
   using namespace dealii;
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const bool         root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   ConditionalOStream pcout(std::cout, root);
 
   try

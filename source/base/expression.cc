@@ -1,6 +1,6 @@
-#include <ltn/base/expression.h>
 #include <deal.II/lac/vector.h>
 
+#include <ltn/base/expression.h>
 #include <ltn/base/input_error.h>
 
 #include <cmath>
@@ -20,12 +20,13 @@ namespace ltn
   Expression<dim>::Expression(const std::string                   &parameter,
                               const std::string                   &expression,
                               const std::map<std::string, double> &constants,
-                              const unsigned int n_components)
+                              const unsigned int                   n_components)
     : FunctionParser<dim>(n_components)
   {
-    std::string allowed =
-      std::to_string(n_components) + " ';'-separated function(s) of " +
-      expression_variables(dim) + " in muparser syntax, using only the constants";
+    std::string allowed = std::to_string(n_components) +
+                          " ';'-separated function(s) of " +
+                          expression_variables(dim) +
+                          " in muparser syntax, using only the constants";
     for (const auto &c : constants)
       allowed += " " + c.first;
 

@@ -27,21 +27,22 @@ namespace ltn
 
   template <int dim>
   ErrorNorms
-  field_errors(const DoFHandler<dim>                           &dof_handler,
-               const Vector<double>                            &field,
-               const Function<dim>                             &exact,
+  field_errors(const DoFHandler<dim>                         &dof_handler,
+               const Vector<double>                          &field,
+               const Function<dim>                           &exact,
                const std::function<bool(const Point<dim> &)> &in_region)
   {
-    const auto         &fe = dof_handler.get_fe();
-    const QGauss<dim>   l2_rule(fe.degree + 3);
+    const auto          &fe = dof_handler.get_fe();
+    const QGauss<dim>    l2_rule(fe.degree + 3);
     const QIterated<dim> max_rule(QTrapezoid<1>(), 4 * fe.degree);
-    FEValues<dim>       l2_values(fe,
+    FEValues<dim>        l2_values(fe,
                             l2_rule,
                             update_values | update_quadrature_points |
                               update_JxW_values);
-    FEValues<dim> max_values(fe, max_rule, update_values |
-                                             update_quadrature_points);
-    std::vector<double> values_at_l2(l2_rule.size()),
+    FEValues<dim>        max_values(fe,
+                             max_rule,
+                             update_values | update_quadrature_points);
+    std::vector<double>  values_at_l2(l2_rule.size()),
       values_at_max(max_rule.size());
 
     ErrorNorms errors;
@@ -59,10 +60,10 @@ namespace ltn
           max_values.reinit(cell);
           max_values.get_function_values(field, values_at_max);
           for (unsigned int q = 0; q < max_rule.size(); ++q)
-            errors.linf = std::max(
-              errors.linf,
-              std::abs(values_at_max[q] -
-                       exact.value(max_values.quadrature_point(q))));
+            errors.linf =
+              std::max(errors.linf,
+                       std::abs(values_at_max[q] -
+                                exact.value(max_values.quadrature_point(q))));
         }
     return errors;
   }

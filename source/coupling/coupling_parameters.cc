@@ -64,9 +64,7 @@ namespace ltn
   CouplingParameters::solve(const CouplingSystem<dim> &system) const
   {
     if (method == "reduced space cg")
-      return solve_reduced_space_cg(system,
-                                    relative_tolerance,
-                                    max_iterations);
+      return solve_reduced_space_cg(system, relative_tolerance, max_iterations);
     return solve_full_space_direct(system);
   }
 

@@ -10,12 +10,12 @@ namespace ltn
   CouplingSolution
   solve_full_space_direct(const CouplingSystem<dim> &system)
   {
-    using index = types::global_dof_index;
+    using index          = types::global_dof_index;
     const auto &unknowns = system.unknowns;
     const auto &overlap  = system.overlap;
 
     // Block offsets: [x_n | x_l | lambda_n | lambda_l].
-    const std::array<index, 2> x_offset = {{0, unknowns[0].n_unknowns()}};
+    const std::array<index, 2> x_offset      = {{0, unknowns[0].n_unknowns()}};
     const std::array<index, 2> lambda_offset = {
       {unknowns[0].n_unknowns() + unknowns[1].n_unknowns(),
        unknowns[0].n_unknowns() + unknowns[1].n_unknowns() +

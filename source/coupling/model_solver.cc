@@ -9,7 +9,7 @@ namespace ltn
     : model(model)
     , unknowns(unknowns)
   {
-    using index          = types::global_dof_index;
+    using index           = types::global_dof_index;
     const index n_free    = unknowns.free.size();
     const index n_control = unknowns.control.size();
 
@@ -37,7 +37,8 @@ namespace ltn
       {
         const index row = unknowns.free[r];
         data_rhs[r]     = model.rhs[row];
-        for (auto entry = model.matrix.begin(row); entry != model.matrix.end(row);
+        for (auto entry = model.matrix.begin(row);
+             entry != model.matrix.end(row);
              ++entry)
           {
             const index position = unknowns.position[entry->column()];
@@ -56,8 +57,7 @@ namespace ltn
 
 
   Vector<double>
-  ModelSolver::forward(const Vector<double> &theta,
-                       const bool            with_data) const
+  ModelSolver::forward(const Vector<double> &theta, const bool with_data) const
   {
     const auto     n_free = unknowns.free.size();
     Vector<double> rhs(n_free);

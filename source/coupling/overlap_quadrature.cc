@@ -34,17 +34,16 @@ namespace ltn
 
     const unsigned int degree =
       std::max(nonlocal_dofs.get_fe().degree, local_dofs.get_fe().degree);
-    const QGauss<1>      rule(degree + 1);
-    const MappingQ1<1>   mapping;
-    GridTools::Cache<1>  nonlocal_cache(nonlocal_dofs.get_triangulation(),
+    const QGauss<1>     rule(degree + 1);
+    const MappingQ1<1>  mapping;
+    GridTools::Cache<1> nonlocal_cache(nonlocal_dofs.get_triangulation(),
                                        mapping);
-    GridTools::Cache<1>  local_cache(local_dofs.get_triangulation(), mapping);
+    GridTools::Cache<1> local_cache(local_dofs.get_triangulation(), mapping);
 
     const auto evaluation_row = [&](const GridTools::Cache<1> &cache,
                                     const DoFHandler<1>       &dofs,
                                     const Point<1>            &point) {
-      const auto found =
-        GridTools::find_active_cell_around_point(cache, point);
+      const auto found = GridTools::find_active_cell_around_point(cache, point);
       const typename DoFHandler<1>::active_cell_iterator cell(
         &dofs.get_triangulation(),
         found.first->level(),

@@ -14,7 +14,7 @@ namespace ltn
     class ReducedHessian
     {
     public:
-      ReducedHessian(const CouplingSystem<dim>         &system,
+      ReducedHessian(const CouplingSystem<dim>          &system,
                      const std::array<ModelSolver *, 2> &solvers)
         : system(system)
         , solvers(solvers)
@@ -72,9 +72,9 @@ namespace ltn
                          const double               relative_tolerance,
                          const unsigned int         max_iterations)
   {
-    ModelSolver nonlocal_solver(*system.models[nonlocal_model],
+    ModelSolver               nonlocal_solver(*system.models[nonlocal_model],
                                 system.unknowns[nonlocal_model]);
-    ModelSolver local_solver(*system.models[local_model],
+    ModelSolver               local_solver(*system.models[local_model],
                              system.unknowns[local_model]);
     const ReducedHessian<dim> hessian(system,
                                       {{&nonlocal_solver, &local_solver}});
@@ -91,11 +91,24 @@ namespace ltn
       {
         ReductionControl control(max_iterations, 0., relative_tolerance);
         SolverCG<Vector<double>> cg(control);
-        cg.solve(hessian, theta, rhs, PreconditionIdentity());
+        try
+          {
+            cg.solve(hessian, theta, rhs, PreconditionIdentity());
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            throw std::runtime_error(
+              "the reduced-space CG did not reduce the residual by "
+              "Coupling/Relative tolerance = " +
+              std::to_string(relative_tolerance) + " within " +
+              "Coupling/Maximum iterations = " +
+              std::to_string(max_iterations) + " (relative residual " +
+              std::to_string(control.last_value() / rhs.l2_norm()) + ")");
+          }
         solution.iterations = control.last_step();
         solution.residual   = control.last_value() / rhs.l2_norm();
       }
-    const auto parts = hessian.split(theta);
+    const auto parts                = hessian.split(theta);
     solution.fields[nonlocal_model] = nonlocal_solver.forward(parts[0], true);
     solution.fields[local_model]    = local_solver.forward(parts[1], true);
     return solution;

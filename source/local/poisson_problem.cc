@@ -31,8 +31,7 @@ namespace ltn
                         "local Poisson problem.");
       prm.declare_entry("Dirichlet boundaries",
                         "x+",
-                        Patterns::List(Patterns::Selection(
-                                         "x-|x+|y-|y+|z-|z+"),
+                        Patterns::List(Patterns::Selection("x-|x+|y-|y+|z-|z+"),
                                        0,
                                        6),
                         "Faces of the body with the Dirichlet condition "
@@ -100,7 +99,7 @@ namespace ltn
       for (const auto f : cell->face_indices())
         if (cell->face(f)->at_boundary())
           {
-            const Point<dim>  center = cell->face(f)->center();
+            const Point<dim>   center = cell->face(f)->center();
             types::boundary_id id     = control_boundary_id;
             for (unsigned int face = 0; face < 2 * dim; ++face)
               {
@@ -135,18 +134,18 @@ namespace ltn
     model.matrix.reinit(model.sparsity);
     model.rhs.reinit(n_dofs);
 
-    const QGauss<dim>     quadrature(fe.degree + 2);
-    const QGauss<dim - 1> face_quadrature(fe.degree + 2);
-    FEValues<dim>         fe_values(fe,
+    const QGauss<dim>                    quadrature(fe.degree + 2);
+    const QGauss<dim - 1>                face_quadrature(fe.degree + 2);
+    FEValues<dim>                        fe_values(fe,
                             quadrature,
                             update_values | update_gradients |
                               update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>     fe_face_values(fe,
+    FEFaceValues<dim>                    fe_face_values(fe,
                                      face_quadrature,
                                      update_values | update_normal_vectors |
                                        update_quadrature_points |
                                        update_JxW_values);
-    const unsigned int    dofs_per_cell = fe.n_dofs_per_cell();
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(dofs_per_cell);
     Vector<double>                       gradient(dim);
 
@@ -195,8 +194,10 @@ namespace ltn
     // Roles: Dirichlet data wins over the control where Gamma_c meets a
     // Dirichlet face.
     model.roles.assign(n_dofs, DofRole::free);
-    const IndexSet control_dofs = DoFTools::extract_boundary_dofs(
-      dof_handler, ComponentMask(), {control_boundary_id});
+    const IndexSet control_dofs =
+      DoFTools::extract_boundary_dofs(dof_handler,
+                                      ComponentMask(),
+                                      {control_boundary_id});
     for (const auto i : control_dofs)
       model.roles[i] = DofRole::control;
 

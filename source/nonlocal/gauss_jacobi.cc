@@ -1,8 +1,8 @@
 #include <ltn/nonlocal/gauss_jacobi.h>
 
-#include <Eigen/Eigenvalues>
-
 #include <cmath>
+
+#include <Eigen/Eigenvalues>
 
 namespace ltn
 {

@@ -108,9 +108,8 @@ namespace ltn
       {
         power_over_factorial *= x * x / ((2. * n - 1) * (2. * n));
         spherical_mean *= (n - 0.5L) / (n - 1 + 0.5L * dim);
-        const long double term = ((n % 2 == 1) ? -1 : 1) *
-                                 spherical_mean * power_over_factorial /
-                                 (2. * n + dim - beta);
+        const long double term = ((n % 2 == 1) ? -1 : 1) * spherical_mean *
+                                 power_over_factorial / (2. * n + dim - beta);
         sum += term;
         if (n > x && std::abs(term) < 1e-22L * std::abs(sum))
           break;

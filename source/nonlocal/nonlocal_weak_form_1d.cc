@@ -61,10 +61,10 @@ namespace ltn
 
 
 
-  NonlocalWeakForm1D::NonlocalWeakForm1D(const Geometry<1>  &geometry,
-                                         const Kernel       &kernel,
-                                         const unsigned int  degree,
-                                         const double        h)
+  NonlocalWeakForm1D::NonlocalWeakForm1D(const Geometry<1> &geometry,
+                                         const Kernel      &kernel,
+                                         const unsigned int degree,
+                                         const double       h)
     : geometry(geometry)
     , kernel(kernel)
     , fe(degree)
@@ -75,11 +75,11 @@ namespace ltn
     const auto   n_collar =
       static_cast<unsigned int>(std::ceil(kernel.horizon() / h - 1e-10));
     const auto n_inside = static_cast<unsigned int>(std::round((b - a) / h));
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation,
-      std::vector<unsigned int>{n_inside + 2 * n_collar},
-      Point<1>(a - n_collar * h),
-      Point<1>(b + n_collar * h));
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              std::vector<unsigned int>{
+                                                n_inside + 2 * n_collar},
+                                              Point<1>(a - n_collar * h),
+                                              Point<1>(b + n_collar * h));
     dof_handler.distribute_dofs(fe);
 
     support_points.resize(dof_handler.n_dofs());
@@ -129,7 +129,7 @@ namespace ltn
       return c1->vertex(0)[0] < c2->vertex(0)[0];
     });
 
-    const double eps = kernel.horizon();
+    const double eps                       = kernel.horizon();
     const auto   for_each_interacting_pair = [&](const auto &action) {
       for (std::size_t i = 0; i < cells.size(); ++i)
         {
@@ -169,8 +169,8 @@ namespace ltn
     model.sparsity.copy_from(dsp);
     model.matrix.reinit(model.sparsity);
 
-    const double  beta = kernel.exponent();
-    const double  c    = kernel.scale();
+    const double    beta = kernel.exponent();
+    const double    c    = kernel.scale();
     const QGauss<1> x_rule(fe.degree + 1);
     // Pieces touching xi = 0: the integrand is xi^2 times a polynomial of
     // degree <= 2p - 1, against the weight |xi|^(2 - beta).
@@ -178,7 +178,7 @@ namespace ltn
       gauss_jacobi_unit_interval(fe.degree + 1, 2 - beta);
     // Pieces away from 0: a polynomial of degree <= 2p + 1 against
     // |xi|^-beta, which is smooth there.
-    const QGauss<1> far_rule(beta == 0 ? fe.degree + 1 : 12);
+    const QGauss<1>       far_rule(beta == 0 ? fe.degree + 1 : 12);
     const LagrangeBasis1D basis(fe);
 
     FullMatrix<double>  local_matrix;
@@ -214,8 +214,8 @@ namespace ltn
           return;
         for (unsigned int q = 0; q < x_rule.size(); ++q)
           {
-            const double x = x_lo + (x_hi - x_lo) * x_rule.point(q)[0];
-            const double y = x + xi;
+            const double x  = x_lo + (x_hi - x_lo) * x_rule.point(q)[0];
+            const double y  = x + xi;
             const double t1 = (x - a1) / (b1 - a1), t2 = (y - a2) / (b2 - a2);
             for (unsigned int k = 0; k < n; ++k)
               differences[k] =
@@ -228,8 +228,8 @@ namespace ltn
           }
       };
 
-      const double lo = std::max(a2 - b1, -eps);
-      const double hi = std::min(b2 - a1, eps);
+      const double        lo     = std::max(a2 - b1, -eps);
+      const double        hi     = std::min(b2 - a1, eps);
       std::vector<double> breaks = {lo, hi, 0., a2 - a1, b2 - b1};
       breaks.erase(std::remove_if(breaks.begin(),
                                   breaks.end(),
@@ -280,8 +280,8 @@ namespace ltn
   NonlocalWeakForm1D::assemble_rhs(const Function<1> &rhs)
   {
     model.rhs.reinit(dof_handler.n_dofs());
-    const QGauss<1>    quadrature(fe.degree + 3);
-    FEValues<1>        fe_values(fe,
+    const QGauss<1>                      quadrature(fe.degree + 3);
+    FEValues<1>                          fe_values(fe,
                           quadrature,
                           update_values | update_quadrature_points |
                             update_JxW_values);

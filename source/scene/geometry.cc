@@ -20,8 +20,7 @@ namespace ltn
 
   template <int dim>
   bool
-  Box<dim>::contains_strictly(const Point<dim> &p,
-                              const double      tolerance) const
+  Box<dim>::contains_strictly(const Point<dim> &p, const double tolerance) const
   {
     for (unsigned int d = 0; d < dim; ++d)
       if (p[d] <= lower[d] + tolerance || p[d] >= upper[d] - tolerance)
@@ -38,8 +37,7 @@ namespace ltn
     double squared = 0;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        const double outside =
-          std::max({lower[d] - p[d], p[d] - upper[d], 0.});
+        const double outside = std::max({lower[d] - p[d], p[d] - upper[d], 0.});
         squared += outside * outside;
       }
     return std::sqrt(squared);
@@ -55,8 +53,8 @@ namespace ltn
                 const std::string      &name,
                 const std::string      &section)
     {
-      const std::string          text = prm.get(name);
-      const std::vector<double>  values =
+      const std::string         text = prm.get(name);
+      const std::vector<double> values =
         Utilities::string_to_double(Utilities::split_string_list(text));
       check_input(values.size() == dim,
                   section + "/" + name,
@@ -269,8 +267,7 @@ namespace ltn
   {
     const unsigned int d = face / 2;
     return (face % 2 == 0) ?
-             std::abs(nonlocal_region.lower[d] - body.lower[d]) <=
-               tolerance() :
+             std::abs(nonlocal_region.lower[d] - body.lower[d]) <= tolerance() :
              std::abs(nonlocal_region.upper[d] - body.upper[d]) <= tolerance();
   }
 
@@ -333,11 +330,11 @@ namespace ltn
   Geometry<dim>::nonlocal_region_of(const Point<dim> &p,
                                     const double      range) const
   {
+    // Collar tags first: they show the nonlocal model's own roles (volume
+    // constraint, control); inside Omega_n the overlap band is marked.
     const double tol = tolerance();
-    if (in_overlap(p, range))
-      return Region::overlap;
     if (nonlocal_region.contains_strictly(p, tol))
-      return Region::nonlocal;
+      return in_overlap(p, range) ? Region::overlap : Region::nonlocal;
     // A collar point is physical when it lies beyond a face of Omega_n that
     // sits on the body's boundary.
     for (unsigned int f = 0; f < 2 * dim; ++f)
@@ -380,8 +377,8 @@ namespace ltn
     for (unsigned int f = 0; f < 2 * dim; ++f)
       if (face_name(f) == name)
         return f;
-    std::string allowed = "face names of the body in " + std::to_string(dim) +
-                          "D, from:";
+    std::string allowed =
+      "face names of the body in " + std::to_string(dim) + "D, from:";
     for (unsigned int f = 0; f < 2 * dim; ++f)
       allowed += " " + face_name(f);
     throw InputError(parameter, name, allowed);

@@ -73,10 +73,10 @@ namespace ltn
   ProblemData::Functions<dim>
   ProblemData::functions(const Kernel &kernel, const double h) const
   {
-    check_input(wave_number * kernel.horizon() <= 30,
+    check_input(wave_number * kernel.horizon() <= 20,
                 "Problem data/Plane wave number",
                 to_string(wave_number),
-                "k eps must be at most 30 for sigma(k) to be accurate (eps = " +
+                "k eps must be at most 20 for sigma(k) to be accurate (eps = " +
                   to_string(kernel.horizon()) + ")");
     const std::map<std::string, double> constants = {
       {"pi", numbers::PI},

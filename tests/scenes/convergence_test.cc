@@ -4,9 +4,9 @@
 
 #include <catch2/catch.hpp>
 
-#include "scene_run.h"
-
 #include <cmath>
+
+#include "scene_run.h"
 
 namespace
 {
@@ -21,13 +21,16 @@ namespace
     for (std::size_t l = 1; l < levels.size(); ++l)
       {
         const auto  &c = levels[l - 1], &f = levels[l];
-        const double l2_rate = ltn::observed_rate(
-          c.coupled_errors.l2(), f.coupled_errors.l2(), c.h, f.h);
-        const double max_rate = ltn::observed_rate(
-          c.coupled_errors.linf, f.coupled_errors.linf, c.h, f.h);
+        const double l2_rate  = ltn::observed_rate(c.coupled_errors.l2(),
+                                                  f.coupled_errors.l2(),
+                                                  c.h,
+                                                  f.h);
+        const double max_rate = ltn::observed_rate(c.coupled_errors.linf,
+                                                   f.coupled_errors.linf,
+                                                   c.h,
+                                                   f.h);
         INFO("level " << l << " h " << f.h << " eps " << f.horizon
-                      << ": L2 rate " << l2_rate << ", max rate "
-                      << max_rate);
+                      << ": L2 rate " << l2_rate << ", max rate " << max_rate);
         CHECK(l2_rate >= min_rate);
         CHECK(max_rate >= min_rate);
       }
@@ -35,9 +38,10 @@ namespace
     // fractional kernels (rates 1.78, 1.89, 1.95, 1.97, 1.99 for s = 0.5):
     // require the rate where it has settled, on the finest refinement.
     const auto &c = levels[levels.size() - 2], &f = levels.back();
-    CHECK(ltn::observed_rate(
-            c.nonlocal_errors.l2(), f.nonlocal_errors.l2(), c.h, f.h) >=
-          min_rate);
+    CHECK(ltn::observed_rate(c.nonlocal_errors.l2(),
+                             f.nonlocal_errors.l2(),
+                             c.h,
+                             f.h) >= min_rate);
   }
 } // namespace
 
@@ -50,10 +54,9 @@ TEST_CASE("second order at fixed horizon for every kernel", "[convergence]")
     for (const std::string method : {"full space direct", "reduced space cg"})
       {
         INFO(kernel << ", " << method);
-        const SceneRun run =
-          run_scene("diffusion_1d_convergence",
-                    {"Nonlocal model/Kernel=" + kernel,
-                     "Coupling/Method=" + method});
+        const SceneRun run = run_scene("diffusion_1d_convergence",
+                                       {"Nonlocal model/Kernel=" + kernel,
+                                        "Coupling/Method=" + method});
         check_rates(run.summary, 1.9, 5e-3);
       }
 }
@@ -65,10 +68,10 @@ TEST_CASE("fractional kernels of several orders converge", "[convergence]")
   for (const double s : {0.1, 0.5, 0.9})
     {
       INFO("s = " << s);
-      const SceneRun run = run_scene("diffusion_1d_convergence",
-                                     {"Nonlocal model/Kernel=fractional",
-                                      "Nonlocal model/Fractional order=" +
-                                        std::to_string(s)});
+      const SceneRun run =
+        run_scene("diffusion_1d_convergence",
+                  {"Nonlocal model/Kernel=fractional",
+                   "Nonlocal model/Fractional order=" + std::to_string(s)});
       check_rates(run.summary, 1.9, 5e-3);
     }
 }

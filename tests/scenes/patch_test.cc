@@ -92,10 +92,9 @@ TEST_CASE("P1 does not contain x^2 so its error is that of P1", "[patch]")
 {
   // A control on the test above: with P1 on both sides x^2 is not
   // reproduced, so the patch test is not passing for a trivial reason.
-  const SceneRun run =
-    run_scene("diffusion_1d_patch",
-              {"Problem data/Exact solution=x^2",
-               "Problem data/Nonlocal right-hand side=-2",
-               "Problem data/Local right-hand side=-2"});
+  const SceneRun run = run_scene("diffusion_1d_patch",
+                                 {"Problem data/Exact solution=x^2",
+                                  "Problem data/Nonlocal right-hand side=-2",
+                                  "Problem data/Local right-hand side=-2"});
   CHECK(run.summary.levels.back().coupled_errors.linf > 1e-6);
 }

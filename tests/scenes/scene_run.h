@@ -20,8 +20,7 @@ struct SceneRun
 };
 
 inline SceneRun
-run_scene(const std::string              &scene,
-          const std::vector<std::string> &sets = {})
+run_scene(const std::string &scene, const std::vector<std::string> &sets = {})
 {
   dealii::ParameterHandler prm;
   ltn::declare_all_parameters(prm);
@@ -29,9 +28,9 @@ run_scene(const std::string              &scene,
                        std::string(LTN_SOURCE_DIR) + "/parameter_files/" +
                          scene + ".prm",
                        sets);
-  ltn::DiffusionScene1D       runner(prm, scene);
-  dealii::ConditionalOStream  quiet(std::cout, false);
-  SceneRun                    run;
+  ltn::DiffusionScene1D      runner(prm, scene);
+  dealii::ConditionalOStream quiet(std::cout, false);
+  SceneRun                   run;
   run.summary   = runner.run("", quiet);
   run.solutions = runner.get_solutions();
   return run;

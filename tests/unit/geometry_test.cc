@@ -27,7 +27,8 @@ TEST_CASE("regions of the seed's 1D layout", "[geometry]")
   CHECK(region(0.) == Region::physical_collar);
   CHECK(region(0.5) == Region::nonlocal);
   CHECK(region(0.8) == Region::overlap);
-  CHECK(region(1.05) == Region::overlap);
+  CHECK(region(1.) == Region::control_collar);
+  CHECK(region(1.05) == Region::control_collar);
 
   CHECK_FALSE(g.in_local_region(Point<1>(0.)));
   CHECK_FALSE(g.in_local_region(Point<1>(0.5)));

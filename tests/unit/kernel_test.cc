@@ -64,7 +64,8 @@ namespace
 TEST_CASE("kernel second moments are one", "[kernel]")
 {
   for (const unsigned int dim : {1u, 2u, 3u})
-    for (const std::string name : {"constant", "inverse distance", "fractional"})
+    for (const std::string name :
+         {"constant", "inverse distance", "fractional"})
       for (const double eps : {0.05, 0.3, 2.})
         {
           const Kernel kernel(name, 0.4, dim, eps);
@@ -135,15 +136,14 @@ TEST_CASE("plane-wave symbol of singular kernels by quadrature", "[kernel]")
       {
         const double eps = 0.2, k = 7;
         const Kernel kernel(name, s, 1, eps);
-        const auto   rule =
-          gauss_jacobi_unit_interval(20, 2 - kernel.exponent());
-        double integral = 0;
+        const auto rule = gauss_jacobi_unit_interval(20, 2 - kernel.exponent());
+        double     integral = 0;
         for (unsigned int q = 0; q < rule.size(); ++q)
           {
             const double r = eps * rule.point(q)[0];
             // cos(kr) - 1 = -2 sin^2(kr/2), without cancellation at small r.
-            integral += rule.weight(q) * -2 * std::pow(std::sin(k * r / 2), 2) /
-                        (r * r);
+            integral +=
+              rule.weight(q) * -2 * std::pow(std::sin(k * r / 2), 2) / (r * r);
           }
         integral *= 4 * kernel.scale() * std::pow(eps, 3 - kernel.exponent());
         INFO(name << " s " << s);

@@ -64,8 +64,7 @@ namespace
 
 
 
-TEST_CASE("nonlocal weak form annihilates constants and linears",
-          "[nonlocal]")
+TEST_CASE("nonlocal weak form annihilates constants and linears", "[nonlocal]")
 {
   for (const std::string kernel :
        {"constant", "inverse distance", "fractional"})
@@ -96,8 +95,7 @@ TEST_CASE("nonlocal weak form equals the Laplacian on quadratics (P2)",
 
 
 
-TEST_CASE("nonlocal degrees of freedom are classified by region",
-          "[nonlocal]")
+TEST_CASE("nonlocal degrees of freedom are classified by region", "[nonlocal]")
 {
   const Geometry<1>  geometry = seed_geometry();
   const double       h = 1. / 16, eps = 0.15;

@@ -25,9 +25,9 @@ TEST_CASE("overlap quadrature interpolates FE fields exactly", "[coupling]")
   for (const unsigned int degree : {1u, 2u})
     for (const double eps : {0.1, 0.125, 0.3})
       {
-        const double       h = 1. / 16;
-        const Kernel       kernel("constant", 0.5, 1, eps);
-        NonlocalWeakForm1D nonlocal(geometry, kernel, degree, h);
+        const double                  h = 1. / 16;
+        const Kernel                  kernel("constant", 0.5, 1, eps);
+        NonlocalWeakForm1D            nonlocal(geometry, kernel, degree, h);
         PoissonProblem<1>::Parameters parameters;
         parameters.degree = degree;
         PoissonProblem<1> local(geometry, parameters, h);

@@ -55,15 +55,15 @@ namespace ltn
     get_output_directory() const;
 
   private:
-    std::string                          scene_name;
-    Geometry<1>                          geometry;
-    NonlocalParameters                   nonlocal_parameters;
-    PoissonProblem<1>::Parameters        local_parameters;
-    ProblemData                          problem_data;
-    Discretization                       discretization;
-    CouplingParameters                   coupling_parameters;
-    bool                                 write_vtu = true;
-    std::string                          output_directory;
-    std::vector<CouplingSolution>        solutions;
+    std::string                   scene_name;
+    Geometry<1>                   geometry;
+    NonlocalParameters            nonlocal_parameters;
+    PoissonProblem<1>::Parameters local_parameters;
+    ProblemData                   problem_data;
+    Discretization                discretization;
+    CouplingParameters            coupling_parameters;
+    bool                          write_vtu = true;
+    std::string                   output_directory;
+    std::vector<CouplingSolution> solutions;
   };
 } // namespace ltn

@@ -33,8 +33,8 @@ namespace ltn
    */
   template <int dim>
   ErrorNorms
-  field_errors(const DoFHandler<dim>                           &dof_handler,
-               const Vector<double>                            &field,
-               const Function<dim>                             &exact,
+  field_errors(const DoFHandler<dim>                         &dof_handler,
+               const Vector<double>                          &field,
+               const Function<dim>                           &exact,
                const std::function<bool(const Point<dim> &)> &in_region);
 } // namespace ltn

@@ -61,9 +61,9 @@ namespace ltn
     };
 
     Kind                                           kind;
-    double                                         number     = 0;
-    std::int64_t                                   integer    = 0;
-    bool                                           boolean    = false;
+    double                                         number  = 0;
+    std::int64_t                                   integer = 0;
+    bool                                           boolean = false;
     std::string                                    text;
     std::vector<std::pair<std::string, JsonValue>> members;
     std::vector<JsonValue>                         elements;

@@ -27,9 +27,9 @@ namespace ltn
     CouplingSolution
     solve(const CouplingSystem<dim> &system) const;
 
-    std::string  method               = "full space direct";
-    double       tikhonov_parameter   = 0;
-    double       relative_tolerance   = 1e-12;
-    unsigned int max_iterations       = 1000;
+    std::string  method             = "full space direct";
+    double       tikhonov_parameter = 0;
+    double       relative_tolerance = 1e-12;
+    unsigned int max_iterations     = 1000;
   };
 } // namespace ltn

@@ -29,8 +29,7 @@ namespace ltn
     explicit ModelUnknowns(const DiscreteModel &model);
 
     /** Sentinel of `position` for fixed degrees of freedom. */
-    static constexpr types::global_dof_index none =
-      numbers::invalid_dof_index;
+    static constexpr types::global_dof_index none = numbers::invalid_dof_index;
 
     std::vector<types::global_dof_index> free;
     std::vector<types::global_dof_index> control;

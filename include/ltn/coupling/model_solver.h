@@ -45,11 +45,11 @@ namespace ltn
     get_unknowns() const;
 
   private:
-    const DiscreteModel      &model;
-    const ModelUnknowns      &unknowns;
-    SparsityPattern           free_free_sparsity, free_control_sparsity;
-    SparseMatrix<double>      free_free, free_control;
-    Vector<double>            data_rhs;
-    SparseDirectUMFPACK       direct;
+    const DiscreteModel &model;
+    const ModelUnknowns &unknowns;
+    SparsityPattern      free_free_sparsity, free_control_sparsity;
+    SparseMatrix<double> free_free, free_control;
+    Vector<double>       data_rhs;
+    SparseDirectUMFPACK  direct;
   };
 } // namespace ltn

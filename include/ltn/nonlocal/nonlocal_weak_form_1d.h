@@ -44,10 +44,10 @@ namespace ltn
      * Build the mesh of `Omega_n` and its collar with mesh size @p h; the
      * collar is covered by `ceil(eps / h)` elements on each side.
      */
-    NonlocalWeakForm1D(const Geometry<1>  &geometry,
-                       const Kernel       &kernel,
-                       const unsigned int  degree,
-                       const double        h);
+    NonlocalWeakForm1D(const Geometry<1> &geometry,
+                       const Kernel      &kernel,
+                       const unsigned int degree,
+                       const double       h);
 
     /**
      * Assemble the matrix, the load vector of @p rhs over `Omega_n`, and the

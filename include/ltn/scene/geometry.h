@@ -98,7 +98,10 @@ namespace ltn
     bool
     in_overlap(const Point<dim> &p, const double range) const;
 
-    /** The region tag of a point of the nonlocal discretization. */
+    /**
+     * The region tag of a point of the nonlocal discretization: a collar tag
+     * outside `Omega_n`, `overlap` or `nonlocal` inside.
+     */
     Region
     nonlocal_region_of(const Point<dim> &p, const double range) const;
 

@@ -1,0 +1,65 @@
+#!/usr/bin/env python3
+"""Plot the fields of a 1D LtN run from its VTU output: the nonlocal and the
+local solution with the exact one, the pointwise errors, and the region tags.
+
+usage: python3 scripts/plot_fields_1d.py OUTPUT_DIR [LEVEL] [PNG]
+
+Needs Debian's python3-vtk9 and python3-matplotlib.
+"""
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+REGIONS = ["nonlocal", "physical collar", "control collar", "overlap", "local"]
+
+
+def read(path):
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput()
+    x = vtk_to_numpy(grid.GetPoints().GetData())[:, 0]
+    data = grid.GetPointData()
+    fields = {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i))
+              for i in range(data.GetNumberOfArrays())}
+    order = x.argsort()
+    return x[order], {k: v[order] for k, v in fields.items()}
+
+
+directory = sys.argv[1]
+level = int(sys.argv[2]) if len(sys.argv) > 2 else 0
+png = sys.argv[3] if len(sys.argv) > 3 else os.path.join(
+    directory, f"fields_level-{level:02d}.png")
+
+xn, n = read(os.path.join(directory, f"nonlocal_field_level-{level:02d}.vtu"))
+xl, l = read(os.path.join(directory, f"local_field_level-{level:02d}.vtu"))
+
+figure, (top, middle, bottom) = plt.subplots(
+    3, 1, sharex=True, figsize=(8, 7), height_ratios=[3, 2, 1])
+top.plot(xn, n["u"], "o-", ms=3, label="nonlocal $u_n$")
+top.plot(xl, l["u"], "s-", ms=3, label="local $u_l$")
+if "u_exact" in n:
+    top.plot(xn, n["u_exact"], "k:", label="exact")
+    top.plot(xl, l["u_exact"], "k:")
+    middle.semilogy(xn, abs(n["error"]) + 1e-300, "o-", ms=3, label="$|u_n - u|$")
+    middle.semilogy(xl, abs(l["error"]) + 1e-300, "s-", ms=3, label="$|u_l - u|$")
+    middle.set_ylabel("error at nodes")
+    middle.legend()
+top.set_ylabel("u")
+top.legend()
+for x, f, marker, label in ((xn, n, "o", "nonlocal mesh"),
+                            (xl, l, "s", "local mesh")):
+    bottom.scatter(x, f["region"], marker=marker, s=12, label=label)
+bottom.set_yticks(range(len(REGIONS)), REGIONS, fontsize=7)
+bottom.set_xlabel("x")
+bottom.legend(fontsize=7, loc="upper right")
+figure.suptitle(f"{os.path.basename(os.path.normpath(directory))}, level {level}")
+figure.tight_layout()
+figure.savefig(png, dpi=110)
+print(f"wrote {png}")

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# LtN quick start: install what is missing (Debian 12), build (Release), then
+#   run   run the default scene and print where its output went, or
+#   test  run the whole ctest suite.
+#
+# usage: bash scripts/quickstart.sh run|test
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build="$here/build"
+jobs=$(nproc 2>/dev/null || echo 2)
+
+# Debian 12 packages LtN builds and tests with.
+packages=(cmake make g++ libdeal.ii-dev catch2 libeigen3-dev numdiff
+          clang-format-16 python3)
+
+install_missing() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" ||
+      missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && return
+  echo "Installing: ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q \
+    --no-install-recommends "${missing[@]}"
+}
+
+build_ltn() {
+  cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release
+  cmake --build "$build" -j "$jobs"
+}
+
+case "${1:-}" in
+  run)
+    install_missing
+    build_ltn
+    cd "$here"
+    "$build/ltn" parameter_files/diffusion_1d_convergence.prm
+    ;;
+  test)
+    install_missing
+    build_ltn
+    cd "$build"
+    # OpenMPI refuses to run as root without these; harmless otherwise.
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    ctest --output-on-failure -j "$jobs"
+    ;;
+  *)
+    echo "usage: bash scripts/quickstart.sh run|test" >&2
+    exit 2
+    ;;
+esac
