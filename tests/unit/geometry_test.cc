@@ -4,17 +4,14 @@
 
 #include <catch2/catch.hpp>
 
+#include "seed_geometry.h"
+
 using namespace ltn;
 
 TEST_CASE("regions of the seed's 1D layout", "[geometry]")
 {
-  Geometry<1> g;
-  g.body.lower[0]            = 0;
-  g.body.upper[0]            = 1.75;
-  g.nonlocal_region.lower[0] = 0;
-  g.nonlocal_region.upper[0] = 1;
-  g.overlap_width            = 0.25;
-  const double eps           = 0.1;
+  const Geometry<1> g   = seed_geometry();
+  const double      eps = 0.1;
 
   CHECK(g.nonlocal_face_on_body_boundary(0));
   CHECK_FALSE(g.nonlocal_face_on_body_boundary(1));

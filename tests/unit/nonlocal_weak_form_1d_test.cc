@@ -14,22 +14,12 @@
 
 #include <cmath>
 
+#include "seed_geometry.h"
+
 using namespace ltn;
 
 namespace
 {
-  Geometry<1>
-  seed_geometry()
-  {
-    Geometry<1> geometry;
-    geometry.body.lower[0]            = 0;
-    geometry.body.upper[0]            = 1.75;
-    geometry.nonlocal_region.lower[0] = 0;
-    geometry.nonlocal_region.upper[0] = 1;
-    geometry.overlap_width            = 0.25;
-    return geometry;
-  }
-
   /** max over free rows |A I(u) - F(-u'')| / max |F| (or 1). */
   double
   consistency_error(const std::string &kernel_name,

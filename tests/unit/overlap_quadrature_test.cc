@@ -11,16 +11,13 @@
 
 #include <catch2/catch.hpp>
 
+#include "seed_geometry.h"
+
 using namespace ltn;
 
 TEST_CASE("overlap quadrature interpolates FE fields exactly", "[coupling]")
 {
-  Geometry<1> geometry;
-  geometry.body.lower[0]            = 0;
-  geometry.body.upper[0]            = 1.75;
-  geometry.nonlocal_region.lower[0] = 0;
-  geometry.nonlocal_region.upper[0] = 1;
-  geometry.overlap_width            = 0.25;
+  const Geometry<1> geometry = seed_geometry();
 
   for (const unsigned int degree : {1u, 2u})
     for (const double eps : {0.1, 0.125, 0.3})

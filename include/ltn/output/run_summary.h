@@ -1,0 +1,62 @@
+#pragma once
+
+#include <deal.II/base/types.h>
+
+#include <ltn/base/field_errors.h>
+#include <ltn/base/json.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /** What one refinement level of a run measured. */
+  struct LevelRecord
+  {
+    double                  h               = 0;
+    double                  horizon         = 0;
+    types::global_dof_index n_nonlocal_dofs = 0;
+    types::global_dof_index n_local_dofs    = 0;
+    types::global_dof_index n_controls      = 0;
+    std::string             solver_method;
+    unsigned int            iterations = 0;
+    double                  residual   = 0;
+    double                  mismatch_J = 0;
+    /** False when the scene has no exact solution. */
+    bool       has_errors = false;
+    ErrorNorms nonlocal_errors, local_errors, coupled_errors;
+    /** Wall time per phase, seconds, in the order the phases ran. */
+    std::vector<std::pair<std::string, double>> timings;
+  };
+
+  /**
+   * The run summary, written as `summary.json` (a public interface: see the
+   * README for its keys). The top-level fields describe the finest level;
+   * a run with several levels adds `convergence`, one entry per level with
+   * its mesh size `h` and the observed rates against the previous level.
+   */
+  struct RunSummary
+  {
+    std::string              scene;
+    unsigned int             dim = 1;
+    std::string              model;
+    std::vector<LevelRecord> levels;
+    double                   total_time = 0;
+    double                   memory_mb  = 0;
+
+    JsonValue
+    to_json() const;
+  };
+
+  /**
+   * The observed rate `log(e_coarse / e_fine) / log(h_coarse / h_fine)`.
+   */
+  double
+  observed_rate(const double e_coarse,
+                const double e_fine,
+                const double h_coarse,
+                const double h_fine);
+} // namespace ltn

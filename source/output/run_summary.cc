@@ -1,0 +1,123 @@
+#include <ltn/output/run_summary.h>
+
+#include <cmath>
+#include <limits>
+
+namespace ltn
+{
+  double
+  observed_rate(const double e_coarse,
+                const double e_fine,
+                const double h_coarse,
+                const double h_fine)
+  {
+    if (e_coarse <= 0 || e_fine <= 0)
+      return std::numeric_limits<double>::quiet_NaN();
+    return std::log(e_coarse / e_fine) / std::log(h_coarse / h_fine);
+  }
+
+
+
+  namespace
+  {
+    JsonValue
+    norms_to_json(const ErrorNorms &e)
+    {
+      JsonValue j = JsonValue::object();
+      j["l2"]     = e.l2();
+      j["linf"]   = e.linf;
+      return j;
+    }
+
+    JsonValue
+    errors_to_json(const LevelRecord &level)
+    {
+      if (!level.has_errors)
+        return JsonValue();
+      JsonValue j   = JsonValue::object();
+      j["nonlocal"] = norms_to_json(level.nonlocal_errors);
+      j["local"]    = norms_to_json(level.local_errors);
+      j["coupled"]  = norms_to_json(level.coupled_errors);
+      return j;
+    }
+
+    void
+    add_level_fields(JsonValue &j, const LevelRecord &level)
+    {
+      j["n_nonlocal_dofs"]      = level.n_nonlocal_dofs;
+      j["n_local_dofs"]         = level.n_local_dofs;
+      j["n_controls"]           = level.n_controls;
+      j["horizon"]              = level.horizon;
+      j["solver"]["method"]     = level.solver_method;
+      j["solver"]["iterations"] = level.iterations;
+      j["solver"]["residual"]   = level.residual;
+      j["mismatch_J"]           = level.mismatch_J;
+      j["errors"]               = errors_to_json(level);
+    }
+  } // namespace
+
+
+
+  JsonValue
+  RunSummary::to_json() const
+  {
+    JsonValue j = JsonValue::object();
+    j["scene"]  = scene;
+    j["dim"]    = dim;
+    j["model"]  = model;
+    add_level_fields(j, levels.back());
+    j["h"] = levels.back().h;
+
+    JsonValue timings = JsonValue::object();
+    for (const auto &phase : levels.front().timings)
+      {
+        double sum = 0;
+        for (const LevelRecord &level : levels)
+          for (const auto &entry : level.timings)
+            if (entry.first == phase.first)
+              sum += entry.second;
+        timings[phase.first] = sum;
+      }
+    timings["total"] = total_time;
+    j["timings"]     = timings;
+    j["memory_mb"]   = memory_mb;
+
+    if (levels.size() > 1)
+      {
+        JsonValue convergence = JsonValue::array();
+        for (std::size_t l = 0; l < levels.size(); ++l)
+          {
+            JsonValue entry = JsonValue::object();
+            entry["level"]  = static_cast<unsigned int>(l);
+            entry["h"]      = levels[l].h;
+            add_level_fields(entry, levels[l]);
+            JsonValue level_timings = JsonValue::object();
+            for (const auto &phase : levels[l].timings)
+              level_timings[phase.first] = phase.second;
+            entry["timings"] = level_timings;
+
+            if (l > 0 && levels[l].has_errors)
+              {
+                const LevelRecord &c = levels[l - 1], &f = levels[l];
+                const auto         rates = [&](const ErrorNorms &coarse,
+                                       const ErrorNorms &fine) {
+                  JsonValue r = JsonValue::object();
+                  r["l2"] = observed_rate(coarse.l2(), fine.l2(), c.h, f.h);
+                  r["linf"] = observed_rate(coarse.linf, fine.linf, c.h, f.h);
+                  return r;
+                };
+                entry["rates"]["nonlocal"] =
+                  rates(c.nonlocal_errors, f.nonlocal_errors);
+                entry["rates"]["local"] = rates(c.local_errors, f.local_errors);
+                entry["rates"]["coupled"] =
+                  rates(c.coupled_errors, f.coupled_errors);
+              }
+            else
+              entry["rates"] = JsonValue();
+            convergence.push_back(entry);
+          }
+        j["convergence"] = convergence;
+      }
+    return j;
+  }
+} // namespace ltn

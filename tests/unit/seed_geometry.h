@@ -1,0 +1,18 @@
+#pragma once
+
+// The seed's 1D layout, shared by the unit tests: body [0, 1.75], nonlocal
+// region (0, 1), overlap width 0.25 (so the local region is [0.75, 1.75]).
+
+#include <ltn/scene/geometry.h>
+
+inline ltn::Geometry<1>
+seed_geometry()
+{
+  ltn::Geometry<1> geometry;
+  geometry.body.lower[0]            = 0;
+  geometry.body.upper[0]            = 1.75;
+  geometry.nonlocal_region.lower[0] = 0;
+  geometry.nonlocal_region.upper[0] = 1;
+  geometry.overlap_width            = 0.25;
+  return geometry;
+}
