@@ -1,0 +1,85 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+
+#include <ltn/base/discrete_model.h>
+#include <ltn/base/field_errors.h>
+#include <ltn/nonlocal/kernel.h>
+#include <ltn/nonlocal/lattice_stencil.h>
+#include <ltn/scene/geometry.h>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * Nonlocal diffusion in 2D and 3D in strong form on particles: the centres
+   * of a lattice of spacing `h` that fills `Omega_n`, plus the particles of
+   * its collar that some particle of `Omega_n` reaches. Each particle of
+   * `Omega_n` satisfies
+   *
+   *   -L_h u(x_i) = 2 sum_j a_j (u(x_i) - u(x_i + xi_j)) = f(x_i)
+   *
+   * with the LatticeStencil `(xi_j, a_j)`, which every particle shares
+   * because the collar makes every neighbourhood complete. Collar particles
+   * outside the body carry the volume constraint `u = g` (fixed); those
+   * inside carry the control `theta_n`.
+   */
+  template <int dim>
+  class ParticleDiffusion
+  {
+  public:
+    ParticleDiffusion(const Geometry<dim> &geometry,
+                      const Kernel        &kernel,
+                      const double         spacing);
+
+    /** Assemble `-L_h`, the load @p rhs and the volume constraint. */
+    void
+    assemble(const Function<dim> &rhs, const Function<dim> &volume_data);
+
+    const DiscreteModel &
+    get_model() const;
+
+    const std::vector<Point<dim>> &
+    get_positions() const;
+
+    /** The volume `h^dim` of every particle. */
+    double
+    particle_volume() const;
+
+    const LatticeStencil<dim> &
+    get_stencil() const;
+
+    /** The region tag of every particle. */
+    std::vector<Region>
+    regions() const;
+
+    /**
+     * Errors of @p field against @p exact over the particles of `Omega_n`:
+     * `l2^2 = sum_i h^dim e_i^2`, `linf = max_i |e_i|`.
+     */
+    ErrorNorms
+    errors(const Vector<double> &field, const Function<dim> &exact) const;
+
+    /** Write the particles with `u`, `u_exact`, `error`, `region` to VTU. */
+    void
+    write_vtu(const Vector<double> &field,
+              const Function<dim>  *exact,
+              const std::string    &filename) const;
+
+  private:
+    const Geometry<dim>     &geometry;
+    const Kernel             kernel;
+    const double             spacing;
+    const LatticeStencil<dim> stencil;
+    std::vector<Point<dim>>  positions;
+    /** Lattice index of each particle, relative to Omega_n's first cell. */
+    std::vector<std::array<int, dim>> indices;
+    DiscreteModel                     model;
+  };
+} // namespace ltn
