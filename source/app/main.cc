@@ -5,7 +5,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <ltn/app/diffusion_scene_1d.h>
+#include <ltn/app/diffusion_scene.h>
 #include <ltn/app/parameter_reading.h>
 #include <ltn/base/input_error.h>
 #include <ltn/base/memory.h>
@@ -70,6 +70,53 @@ namespace
                      std::string("a scene file\n") + usage);
     return command_line;
   }
+  /**
+   * Validate the scene, and only then create its output directory, run it
+   * and write the summary.
+   */
+  template <int dim>
+  void
+  run_scene(dealii::ParameterHandler   &prm,
+            const CommandLine          &command_line,
+            dealii::ConditionalOStream &pcout)
+  {
+    using namespace dealii;
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    const std::string scene_name =
+      std::filesystem::path(command_line.scene_file).stem().string();
+    ltn::DiffusionScene<dim> scene(prm, scene_name);
+
+    std::string output_directory = command_line.output_directory;
+    if (output_directory.empty())
+      output_directory = scene.get_output_directory();
+    if (output_directory.empty())
+      output_directory = "output/" + scene_name;
+    if (root)
+      {
+        std::filesystem::create_directories(output_directory);
+        std::ofstream used(output_directory + "/used_parameters.prm");
+        prm.print_parameters(used, ParameterHandler::PRM);
+      }
+    MPI_Barrier(MPI_COMM_WORLD);
+
+    pcout << "LtN scene '" << scene_name << "' (" << dim << "D)" << std::endl;
+    ltn::RunSummary summary =
+      scene.run(root ? output_directory : std::string(), pcout);
+    summary.memory_mb = ltn::peak_memory_mb(MPI_COMM_WORLD);
+
+    if (root)
+      {
+        std::ofstream json(output_directory + "/summary.json");
+        summary.to_json().write(json);
+        json << '\n';
+        std::cout << '\n';
+        ltn::print_convergence_table(summary, std::cout);
+        std::cout << "\nTotal wall time " << summary.total_time
+                  << " s, peak memory " << summary.memory_mb << " MB\n"
+                  << "Output written to " << output_directory << "/"
+                  << std::endl;
+      }
+  }
 } // namespace
 
 
@@ -95,40 +142,16 @@ main(int argc, char **argv)
         }
 
       ltn::read_parameters(prm, command_line.scene_file, command_line.sets);
-      const std::string scene_name =
-        std::filesystem::path(command_line.scene_file).stem().string();
-      ltn::DiffusionScene1D scene(prm, scene_name);
-
-      // Everything is validated; only now is anything written.
-      std::string output_directory = command_line.output_directory;
-      if (output_directory.empty())
-        output_directory = scene.get_output_directory();
-      if (output_directory.empty())
-        output_directory = "output/" + scene_name;
-      if (root)
+      switch (prm.get_integer("Dimension"))
         {
-          std::filesystem::create_directories(output_directory);
-          std::ofstream used(output_directory + "/used_parameters.prm");
-          prm.print_parameters(used, ParameterHandler::PRM);
-        }
-      MPI_Barrier(MPI_COMM_WORLD);
-
-      pcout << "LtN scene '" << scene_name << "'" << std::endl;
-      ltn::RunSummary summary =
-        scene.run(root ? output_directory : std::string(), pcout);
-      summary.memory_mb = ltn::peak_memory_mb(MPI_COMM_WORLD);
-
-      if (root)
-        {
-          std::ofstream json(output_directory + "/summary.json");
-          summary.to_json().write(json);
-          json << '\n';
-          std::cout << '\n';
-          ltn::print_convergence_table(summary, std::cout);
-          std::cout << "\nTotal wall time " << summary.total_time
-                    << " s, peak memory " << summary.memory_mb << " MB\n"
-                    << "Output written to " << output_directory << "/"
-                    << std::endl;
+          case 1:
+            run_scene<1>(prm, command_line, pcout);
+            break;
+          case 2:
+            run_scene<2>(prm, command_line, pcout);
+            break;
+          default:
+            run_scene<3>(prm, command_line, pcout);
         }
     }
   catch (const ltn::InputError &error)

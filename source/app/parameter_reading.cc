@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <ltn/app/diffusion_scene_1d.h>
+#include <ltn/app/diffusion_scene.h>
 #include <ltn/app/parameter_reading.h>
 #include <ltn/base/input_error.h>
 
@@ -13,7 +13,8 @@ namespace ltn
   void
   declare_all_parameters(ParameterHandler &prm)
   {
-    DiffusionScene1D::declare_parameters(prm);
+    // Declarations do not depend on the dimension.
+    DiffusionScene<1>::declare_parameters(prm);
   }
 
 

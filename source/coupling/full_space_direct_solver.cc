@@ -128,13 +128,35 @@ namespace ltn
     Vector<double> z(n);
     direct.vmult(z, b);
 
-    Vector<double> residual(n);
-    K.residual(residual, z, b);
+    // Wide nonlocal stencils make K ill-conditioned enough that one
+    // factorization can lose digits (relative residuals of 1e-5 were seen
+    // for P2/P2 at eps/h = 64): refine iteratively with the same factors.
+    const double   b_norm = std::max(b.l2_norm(), 1e-300);
+    Vector<double> residual(n), correction(n);
+    double         relative_residual = K.residual(residual, z, b) / b_norm;
+    unsigned int   refinements       = 0;
+    while (relative_residual > 1e-14 && refinements < 5)
+      {
+        direct.vmult(correction, residual);
+        z += correction;
+        const double next = K.residual(residual, z, b) / b_norm;
+        ++refinements;
+        if (next >= relative_residual)
+          break;
+        relative_residual = next;
+      }
+    if (!(relative_residual <= 1e-8))
+      throw std::runtime_error(
+        "the full-space optimality system could not be solved accurately "
+        "(relative residual " +
+        std::to_string(relative_residual) +
+        " after iterative refinement): it is singular or nearly so. Check "
+        "that the overlap observes the controls: a wider overlap or a finer "
+        "particle lattice helps.");
 
     CouplingSolution solution;
-    solution.iterations = 1;
-    solution.residual =
-      (b.l2_norm() > 0) ? residual.l2_norm() / b.l2_norm() : residual.l2_norm();
+    solution.iterations = 1 + refinements;
+    solution.residual   = relative_residual;
     for (const unsigned int k : {0u, 1u})
       {
         const DiscreteModel &model = *system.models[k];

@@ -11,6 +11,36 @@
 
 namespace ltn
 {
+  namespace
+  {
+    /** The row that evaluates a finite element field at @p point. */
+    template <int dim>
+    SparseRow
+    evaluation_row(const GridTools::Cache<dim> &cache,
+                   const DoFHandler<dim>       &dofs,
+                   const Point<dim>            &point)
+    {
+      const auto found = GridTools::find_active_cell_around_point(cache, point);
+      AssertThrow(found.first.state() == IteratorState::valid,
+                  ExcMessage("An overlap point lies outside the local mesh."));
+      const typename DoFHandler<dim>::active_cell_iterator cell(
+        &dofs.get_triangulation(),
+        found.first->level(),
+        found.first->index(),
+        &dofs);
+      std::vector<types::global_dof_index> indices(
+        dofs.get_fe().n_dofs_per_cell());
+      cell->get_dof_indices(indices);
+      SparseRow row;
+      for (unsigned int i = 0; i < indices.size(); ++i)
+        row.emplace_back(indices[i],
+                         dofs.get_fe().shape_value(i, found.second));
+      return row;
+    }
+  } // namespace
+
+
+
   OverlapQuadrature<1>
   create_overlap_quadrature_1d(const Geometry<1>   &geometry,
                                const double         horizon,
@@ -40,25 +70,6 @@ namespace ltn
                                        mapping);
     GridTools::Cache<1> local_cache(local_dofs.get_triangulation(), mapping);
 
-    const auto evaluation_row = [&](const GridTools::Cache<1> &cache,
-                                    const DoFHandler<1>       &dofs,
-                                    const Point<1>            &point) {
-      const auto found = GridTools::find_active_cell_around_point(cache, point);
-      const typename DoFHandler<1>::active_cell_iterator cell(
-        &dofs.get_triangulation(),
-        found.first->level(),
-        found.first->index(),
-        &dofs);
-      std::vector<types::global_dof_index> indices(
-        dofs.get_fe().n_dofs_per_cell());
-      cell->get_dof_indices(indices);
-      SparseRow row;
-      for (unsigned int i = 0; i < indices.size(); ++i)
-        row.emplace_back(indices[i],
-                         dofs.get_fe().shape_value(i, found.second));
-      return row;
-    };
-
     OverlapQuadrature<1> overlap;
     for (std::size_t k = 0; k + 1 < breaks.size(); ++k)
       {
@@ -78,4 +89,60 @@ namespace ltn
       }
     return overlap;
   }
+
+
+
+  OverlapQuadrature<1>
+  create_overlap_quadrature(const Geometry<1>        &geometry,
+                            const double              horizon,
+                            const NonlocalWeakForm1D &nonlocal,
+                            const DoFHandler<1>      &local_dofs)
+  {
+    return create_overlap_quadrature_1d(geometry,
+                                        horizon,
+                                        nonlocal.get_dof_handler(),
+                                        local_dofs);
+  }
+
+
+
+  template <int dim>
+  OverlapQuadrature<dim>
+  create_overlap_quadrature(
+    const Geometry<dim> &geometry,
+    const double /*horizon: the control particles are the collar*/,
+    const ParticleDiffusion<dim> &nonlocal,
+    const DoFHandler<dim>        &local_dofs)
+  {
+    const MappingQ1<dim>  mapping;
+    GridTools::Cache<dim> cache(local_dofs.get_triangulation(), mapping);
+    const auto           &positions = nonlocal.get_positions();
+    const auto           &roles     = nonlocal.get_model().roles;
+
+    OverlapQuadrature<dim> overlap;
+    for (types::global_dof_index i = 0; i < positions.size(); ++i)
+      // Omega_b = Omega_l ∩ (Omega_n ∪ control collar): the control
+      // particles are the control collar (all inside Omega_l).
+      if (roles[i] == DofRole::control ||
+          (roles[i] == DofRole::free && geometry.in_local_region(positions[i])))
+        {
+          overlap.points.push_back(positions[i]);
+          overlap.weights.push_back(nonlocal.particle_volume());
+          overlap.nonlocal_rows.push_back({{i, 1.}});
+          overlap.local_rows.push_back(
+            evaluation_row(cache, local_dofs, positions[i]));
+        }
+    return overlap;
+  }
+
+  template OverlapQuadrature<2>
+  create_overlap_quadrature(const Geometry<2> &,
+                            double,
+                            const ParticleDiffusion<2> &,
+                            const DoFHandler<2> &);
+  template OverlapQuadrature<3>
+  create_overlap_quadrature(const Geometry<3> &,
+                            double,
+                            const ParticleDiffusion<3> &,
+                            const DoFHandler<3> &);
 } // namespace ltn

@@ -2,6 +2,7 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
+#include <ltn/base/input_error.h>
 #include <ltn/coupling/model_solver.h>
 #include <ltn/coupling/reduced_space_solver.h>
 
@@ -100,10 +101,10 @@ namespace ltn
             throw std::runtime_error(
               "the reduced-space CG did not reduce the residual by "
               "Coupling/Relative tolerance = " +
-              std::to_string(relative_tolerance) + " within " +
-              "Coupling/Maximum iterations = " +
+              to_string(relative_tolerance) +
+              " within Coupling/Maximum iterations = " +
               std::to_string(max_iterations) + " (relative residual " +
-              std::to_string(control.last_value() / rhs.l2_norm()) + ")");
+              to_string(control.last_value() / rhs.l2_norm()) + ")");
           }
         solution.iterations = control.last_step();
         solution.residual   = control.last_value() / rhs.l2_norm();

@@ -2,9 +2,9 @@
 
 #include <ltn/nonlocal/lattice_stencil.h>
 
-#include <Eigen/Dense>
-
 #include <cmath>
+
+#include <Eigen/Dense>
 
 namespace ltn
 {
@@ -17,7 +17,8 @@ namespace ltn
     {
       std::vector<std::array<unsigned int, dim>> result;
       std::array<unsigned int, dim>              alpha{};
-      const auto recurse = [&](const auto &self, const unsigned int d,
+      const auto                                 recurse = [&](const auto        &self,
+                               const unsigned int d,
                                const unsigned int remaining) -> void {
         if (d == dim)
           {
@@ -45,19 +46,19 @@ namespace ltn
      */
     template <int dim>
     double
-    cut_cell_integral(const Kernel            &kernel,
-                      const Point<dim>        &lower,
-                      const Point<dim>        &upper,
-                      const unsigned int       depth,
-                      const unsigned int       max_depth,
-                      const Quadrature<dim>   &rule)
+    cut_cell_integral(const Kernel          &kernel,
+                      const Point<dim>      &lower,
+                      const Point<dim>      &upper,
+                      const unsigned int     depth,
+                      const unsigned int     max_depth,
+                      const Quadrature<dim> &rule)
     {
-      const double eps = kernel.horizon();
+      const double eps   = kernel.horizon();
       double       near2 = 0, far2 = 0;
       for (unsigned int d = 0; d < dim; ++d)
         {
           const double lo = lower[d], hi = upper[d];
-          const double n  = (lo > 0) ? lo : (hi < 0 ? -hi : 0.);
+          const double n = (lo > 0) ? lo : (hi < 0 ? -hi : 0.);
           near2 += n * n;
           far2 += std::max(lo * lo, hi * hi);
         }
@@ -87,10 +88,10 @@ namespace ltn
           Point<dim> child_lower, child_upper;
           for (unsigned int d = 0; d < dim; ++d)
             {
-              const double middle = 0.5 * (lower[d] + upper[d]);
+              const double middle     = 0.5 * (lower[d] + upper[d]);
               const bool   upper_half = (child >> d) & 1;
-              child_lower[d] = upper_half ? middle : lower[d];
-              child_upper[d] = upper_half ? upper[d] : middle;
+              child_lower[d]          = upper_half ? middle : lower[d];
+              child_upper[d]          = upper_half ? upper[d] : middle;
             }
           sum += cut_cell_integral(
             kernel, child_lower, child_upper, depth + 1, max_depth, rule);
@@ -109,7 +110,7 @@ namespace ltn
     // Spherical part: int over S^{dim-1} of w^alpha, zero unless every
     // alpha_d is even; radial part: int_0^eps c r^-beta (r/eps)^|alpha|
     // r^(dim-1) dr.
-    unsigned int order = 0;
+    unsigned int order     = 0;
     double       spherical = 2;
     for (const unsigned int a : alpha)
       {
@@ -137,10 +138,10 @@ namespace ltn
     const QGauss<dim>  rule(3);
     const unsigned int max_depth = (dim == 1) ? 30 : (dim == 2 ? 9 : 5);
 
-    std::vector<double>        base;
-    std::array<int, dim>       o{};
-    const int                  n = 2 * stencil_radius + 1;
-    const unsigned int         n_cells = std::pow(n, dim);
+    std::vector<double>  base;
+    std::array<int, dim> o{};
+    const int            n       = 2 * stencil_radius + 1;
+    const unsigned int   n_cells = std::pow(n, dim);
     for (unsigned int index = 0; index < n_cells; ++index)
       {
         unsigned int rest = index;
@@ -158,8 +159,8 @@ namespace ltn
         // coefficient; the moment correction accounts for its integral.
         if (zero)
           continue;
-        const double a = cut_cell_integral(kernel, lower, upper, 0, max_depth,
-                                           rule);
+        const double a =
+          cut_cell_integral(kernel, lower, upper, 0, max_depth, rule);
         if (a > 0)
           {
             stencil_offsets.push_back(o);
@@ -171,7 +172,7 @@ namespace ltn
     const unsigned int n_points = base.size();
     for (const unsigned int try_degree : {4u, 2u})
       {
-        const auto    alphas = multi_indices<dim>(try_degree);
+        const auto      alphas = multi_indices<dim>(try_degree);
         Eigen::MatrixXd G(alphas.size(), n_points);
         Eigen::VectorXd target(alphas.size()), a0(n_points);
         for (unsigned int j = 0; j < n_points; ++j)
@@ -183,8 +184,8 @@ namespace ltn
               {
                 double monomial = 1;
                 for (unsigned int d = 0; d < dim; ++d)
-                  monomial *= std::pow(stencil_offsets[j][d] * h / eps,
-                                       alphas[k][d]);
+                  monomial *=
+                    std::pow(stencil_offsets[j][d] * h / eps, alphas[k][d]);
                 G(k, j) = monomial;
               }
           }
@@ -194,8 +195,7 @@ namespace ltn
         const Eigen::VectorXd lambda =
           S.completeOrthogonalDecomposition().solve(target - G * a0);
         const Eigen::VectorXd a = a0 + GD.transpose() * lambda;
-        const double          defect =
-          (G * a - target).lpNorm<Eigen::Infinity>();
+        const double defect     = (G * a - target).lpNorm<Eigen::Infinity>();
         if (defect <= 1e-12 * target.lpNorm<Eigen::Infinity>())
           {
             stencil_coefficients.assign(a.data(), a.data() + n_points);

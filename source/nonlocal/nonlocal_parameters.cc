@@ -22,10 +22,18 @@ namespace ltn
                         "mesh size of each level, eps = m h, so that a "
                         "refinement study drives eps -> 0 (asymptotic "
                         "compatibility). Zero keeps `Horizon` fixed.");
+      prm.declare_entry("Particle spacing to mesh size ratio",
+                        "1",
+                        Patterns::Double(0),
+                        "2D and 3D: the spacing of the particle lattice as a "
+                        "multiple of the mesh size of each level. The "
+                        "lattice fills the nonlocal region, so the spacing "
+                        "must divide its extents; it need not line up with "
+                        "the finite element mesh.");
       prm.declare_entry("Finite element degree",
                         "1",
                         Patterns::Integer(1, 2),
-                        "Degree of the continuous finite elements of the 1D "
+                        "1D: degree of the continuous finite elements of the "
                         "nonlocal weak form.");
     }
     prm.leave_subsection();
@@ -43,6 +51,11 @@ namespace ltn
       fixed_horizon    = prm.get_double("Horizon");
       horizon_ratio    = prm.get_double("Horizon to mesh size ratio");
       degree           = prm.get_integer("Finite element degree");
+      spacing_ratio    = prm.get_double("Particle spacing to mesh size ratio");
+      check_input(spacing_ratio > 0,
+                  "Nonlocal model/Particle spacing to mesh size ratio",
+                  to_string(spacing_ratio),
+                  "a positive ratio");
       check_input(horizon_ratio > 0 || fixed_horizon > 0,
                   "Nonlocal model/Horizon",
                   to_string(fixed_horizon),
@@ -63,6 +76,14 @@ namespace ltn
   NonlocalParameters::horizon(const double h) const
   {
     return (horizon_ratio > 0) ? horizon_ratio * h : fixed_horizon;
+  }
+
+
+
+  double
+  NonlocalParameters::particle_spacing(const double h) const
+  {
+    return spacing_ratio * h;
   }
 
 

@@ -335,4 +335,16 @@ namespace ltn
   {
     return support_points;
   }
+
+
+
+  ErrorNorms
+  NonlocalWeakForm1D::errors(const Vector<double> &field,
+                             const Function<1>    &exact) const
+  {
+    const double tol = geometry.tolerance();
+    return field_errors<1>(dof_handler, field, exact, [&](const Point<1> &p) {
+      return geometry.nonlocal_region.contains_strictly(p, tol);
+    });
+  }
 } // namespace ltn

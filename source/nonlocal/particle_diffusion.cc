@@ -1,10 +1,8 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <ltn/nonlocal/particle_diffusion.h>
-#include <ltn/output/point_cloud_output.h>
 
 #include <cmath>
-#include <fstream>
 #include <set>
 
 namespace ltn
@@ -24,14 +22,14 @@ namespace ltn
     // stencil offset.
     const std::set<std::array<int, dim>> reach(stencil.offsets().begin(),
                                                stencil.offsets().end());
-    const int            R = stencil.radius();
-    std::array<int, dim> n, extent;
-    unsigned int         n_candidates = 1;
+    const int                            R = stencil.radius();
+    std::array<int, dim>                 n, extent;
+    unsigned int                         n_candidates = 1;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        n[d] = static_cast<int>(std::round(
-          (geometry.nonlocal_region.upper[d] - geometry.nonlocal_region.lower[d]) /
-          spacing));
+        n[d] = static_cast<int>(std::round((geometry.nonlocal_region.upper[d] -
+                                            geometry.nonlocal_region.lower[d]) /
+                                           spacing));
         extent[d] = n[d] + 2 * R;
         n_candidates *= extent[d];
       }
@@ -125,7 +123,8 @@ namespace ltn
           for (std::size_t k = 0; k < offsets.size(); ++k)
             {
               model.matrix.add(i, i, 2 * coefficients[k]);
-              model.matrix.add(i, neighbour(i, offsets[k]),
+              model.matrix.add(i,
+                               neighbour(i, offsets[k]),
                                -2 * coefficients[k]);
             }
           model.rhs[i] = rhs.value(positions[i]);
@@ -201,35 +200,6 @@ namespace ltn
   }
 
 
-
-  template <int dim>
-  void
-  ParticleDiffusion<dim>::write_vtu(const Vector<double> &field,
-                                    const Function<dim>  *exact,
-                                    const std::string    &filename) const
-  {
-    std::vector<std::pair<std::string, std::vector<double>>> fields;
-    fields.emplace_back("u",
-                        std::vector<double>(field.begin(), field.end()));
-    if (exact != nullptr)
-      {
-        std::vector<double> values(positions.size()), error(positions.size());
-        for (std::size_t i = 0; i < positions.size(); ++i)
-          {
-            values[i] = exact->value(positions[i]);
-            error[i]  = field[i] - values[i];
-          }
-        fields.emplace_back("u_exact", values);
-        fields.emplace_back("error", error);
-      }
-    std::vector<double> tags;
-    for (const Region r : regions())
-      tags.push_back(static_cast<double>(r));
-    fields.emplace_back("region", tags);
-
-    std::ofstream out(filename);
-    PointCloudOutput<dim>(positions, fields).write_vtu(out);
-  }
 
   template class ParticleDiffusion<2>;
   template class ParticleDiffusion<3>;

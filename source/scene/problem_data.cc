@@ -34,11 +34,12 @@ namespace ltn
                         "Data u_n = g of the nonlocal model on its physical "
                         "collar. Empty: the exact solution.");
       prm.declare_entry("Boundary gradient",
-                        "0",
+                        "",
                         Patterns::Anything(),
                         "A flux vector q (dim components separated by ';') "
                         "whose normal component q.n is the Neumann data "
-                        "du/dn on the local model's Neumann boundaries.");
+                        "du/dn on the local model's Neumann boundaries. "
+                        "Empty: zero flux.");
       prm.declare_entry("Plane wave number",
                         "0",
                         Patterns::Double(0),
@@ -111,7 +112,13 @@ namespace ltn
     f.boundary_data = or_exact("Boundary data", boundary_data);
     f.volume_constraint_data =
       or_exact("Volume constraint data", volume_constraint_data);
-    f.boundary_gradient = make("Boundary gradient", boundary_gradient, dim);
+    std::string zero_flux = "0";
+    for (unsigned int d = 1; d < dim; ++d)
+      zero_flux += "; 0";
+    f.boundary_gradient =
+      make("Boundary gradient",
+           boundary_gradient.empty() ? zero_flux : boundary_gradient,
+           dim);
     return f;
   }
 

@@ -6,7 +6,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <ltn/app/diffusion_scene_1d.h>
+#include <ltn/app/diffusion_scene.h>
 #include <ltn/app/parameter_reading.h>
 
 #include <iostream>
@@ -28,11 +28,23 @@ run_scene(const std::string &scene, const std::vector<std::string> &sets = {})
                        std::string(LTN_SOURCE_DIR) + "/parameter_files/" +
                          scene + ".prm",
                        sets);
-  ltn::DiffusionScene1D      runner(prm, scene);
   dealii::ConditionalOStream quiet(std::cout, false);
   SceneRun                   run;
-  run.summary   = runner.run("", quiet);
-  run.solutions = runner.get_solutions();
+  const auto                 solve = [&](auto &&runner) {
+    run.summary   = runner.run("", quiet);
+    run.solutions = runner.get_solutions();
+  };
+  switch (prm.get_integer("Dimension"))
+    {
+      case 1:
+        solve(ltn::DiffusionScene<1>(prm, scene));
+        break;
+      case 2:
+        solve(ltn::DiffusionScene<2>(prm, scene));
+        break;
+      default:
+        solve(ltn::DiffusionScene<3>(prm, scene));
+    }
   return run;
 }
 

@@ -57,11 +57,11 @@ namespace
         defect = std::max(defect, std::abs(Au[i] - model.rhs[i]));
     // Scale: the diagonal of A, ~ 1/h^2.
     return defect / model.matrix.diag_element(0 + [&] {
-             std::size_t i = 0;
-             while (model.roles[i] != DofRole::free)
-               ++i;
-             return i;
-           }());
+      std::size_t i = 0;
+      while (model.roles[i] != DofRole::free)
+        ++i;
+      return i;
+    }());
   }
 } // namespace
 
@@ -116,8 +116,8 @@ TEST_CASE("stencil moments match the kernel's", "[particles]")
   for (const std::string kernel : {"constant", "inverse distance"})
     for (const double m : {2., 3.5, 5.})
       {
-        const double           h = 0.01;
-        const Kernel           k2(kernel, 0.5, 2, m * h);
+        const double            h = 0.01;
+        const Kernel            k2(kernel, 0.5, 2, m * h);
         const LatticeStencil<2> stencil(k2, h);
         INFO(kernel << " m " << m);
         CHECK(stencil.exact_degree() == 4);
@@ -129,16 +129,16 @@ TEST_CASE("stencil moments match the kernel's", "[particles]")
             const double y = stencil.offsets()[j][1] * h;
             second += stencil.coefficients()[j] * x * x;
             fourth += stencil.coefficients()[j] * std::pow(x / (m * h), 4);
-            mixed += stencil.coefficients()[j] * x * x * y * y /
-                     std::pow(m * h, 4);
+            mixed +=
+              stencil.coefficients()[j] * x * x * y * y / std::pow(m * h, 4);
           }
         CHECK(second == Approx(1).epsilon(1e-12));
-        CHECK(fourth ==
-              Approx(LatticeStencil<2>::exact_moment(k2, {4, 0}))
-                .epsilon(1e-12));
-        CHECK(mixed ==
-              Approx(LatticeStencil<2>::exact_moment(k2, {2, 2}))
-                .epsilon(1e-12));
+        CHECK(
+          fourth ==
+          Approx(LatticeStencil<2>::exact_moment(k2, {4, 0})).epsilon(1e-12));
+        CHECK(
+          mixed ==
+          Approx(LatticeStencil<2>::exact_moment(k2, {2, 2})).epsilon(1e-12));
         // Every coefficient positive: the operator stays an M-matrix.
         for (const double a : stencil.coefficients())
           CHECK(a > 0);

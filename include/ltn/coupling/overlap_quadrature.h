@@ -5,6 +5,8 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <ltn/nonlocal/nonlocal_weak_form_1d.h>
+#include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/scene/geometry.h>
 
 #include <utility>
@@ -47,4 +49,24 @@ namespace ltn
                                const double         horizon,
                                const DoFHandler<1> &nonlocal_dofs,
                                const DoFHandler<1> &local_dofs);
+
+  /** The 1D FEM-FEM overlap quadrature of a NonlocalWeakForm1D. */
+  OverlapQuadrature<1>
+  create_overlap_quadrature(const Geometry<1>        &geometry,
+                            const double              horizon,
+                            const NonlocalWeakForm1D &nonlocal,
+                            const DoFHandler<1>      &local_dofs);
+
+  /**
+   * The particle overlap quadrature: one point per particle of `Omega_b`
+   * (the control particles, and the particles of `Omega_n` in `Omega_l`),
+   * with the particle's volume as weight; `E_q` picks the particle and `P_q`
+   * evaluates the local finite element field at its position.
+   */
+  template <int dim>
+  OverlapQuadrature<dim>
+  create_overlap_quadrature(const Geometry<dim>          &geometry,
+                            const double                  horizon,
+                            const ParticleDiffusion<dim> &nonlocal,
+                            const DoFHandler<dim>        &local_dofs);
 } // namespace ltn

@@ -55,7 +55,8 @@ namespace ltn
      * of @p kernel.
      */
     static double
-    exact_moment(const Kernel &kernel, const std::array<unsigned int, dim> &alpha);
+    exact_moment(const Kernel                        &kernel,
+                 const std::array<unsigned int, dim> &alpha);
 
   private:
     std::vector<std::array<int, dim>> stencil_offsets;

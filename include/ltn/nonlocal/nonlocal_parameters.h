@@ -27,6 +27,10 @@ namespace ltn
     double
     horizon(const double h) const;
 
+    /** The particle spacing (2D, 3D) at mesh size @p h. */
+    double
+    particle_spacing(const double h) const;
+
     /** The kernel at mesh size @p h, for a @p dim dimensional model. */
     Kernel
     kernel(const unsigned int dim, const double h) const;
@@ -36,5 +40,6 @@ namespace ltn
     double       fixed_horizon    = 0;
     double       horizon_ratio    = 0;
     unsigned int degree           = 1;
+    double       spacing_ratio    = 1;
   };
 } // namespace ltn

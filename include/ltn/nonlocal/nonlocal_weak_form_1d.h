@@ -9,6 +9,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <ltn/base/discrete_model.h>
+#include <ltn/base/field_errors.h>
 #include <ltn/nonlocal/kernel.h>
 #include <ltn/scene/geometry.h>
 
@@ -69,6 +70,10 @@ namespace ltn
     /** The support point of each degree of freedom. */
     const std::vector<Point<1>> &
     get_support_points() const;
+
+    /** The error of @p field against @p exact over `Omega_n`. */
+    ErrorNorms
+    errors(const Vector<double> &field, const Function<1> &exact) const;
 
   private:
     void

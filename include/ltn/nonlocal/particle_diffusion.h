@@ -66,18 +66,12 @@ namespace ltn
     ErrorNorms
     errors(const Vector<double> &field, const Function<dim> &exact) const;
 
-    /** Write the particles with `u`, `u_exact`, `error`, `region` to VTU. */
-    void
-    write_vtu(const Vector<double> &field,
-              const Function<dim>  *exact,
-              const std::string    &filename) const;
-
   private:
-    const Geometry<dim>     &geometry;
-    const Kernel             kernel;
-    const double             spacing;
+    const Geometry<dim>      &geometry;
+    const Kernel              kernel;
+    const double              spacing;
     const LatticeStencil<dim> stencil;
-    std::vector<Point<dim>>  positions;
+    std::vector<Point<dim>>   positions;
     /** Lattice index of each particle, relative to Omega_n's first cell. */
     std::vector<std::array<int, dim>> indices;
     DiscreteModel                     model;

@@ -25,7 +25,7 @@ namespace ltn
      * @param fields named values, one per point each.
      */
     PointCloudOutput(
-      const std::vector<Point<dim>>                                &points,
+      const std::vector<Point<dim>>                                  &points,
       const std::vector<std::pair<std::string, std::vector<double>>> &fields);
 
   private:

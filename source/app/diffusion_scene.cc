@@ -1,26 +1,58 @@
 #include <deal.II/base/timer.h>
 
-#include <ltn/app/diffusion_scene_1d.h>
+#include <ltn/app/diffusion_scene.h>
 #include <ltn/base/field_errors.h>
 #include <ltn/base/input_error.h>
 #include <ltn/coupling/overlap_quadrature.h>
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
+#include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/output/field_output.h>
+#include <ltn/output/nonlocal_output.h>
 
 #include <iomanip>
+#include <memory>
+#include <type_traits>
 
 namespace ltn
 {
+  namespace
+  {
+    /** The nonlocal discretization of a dimension. */
+    template <int dim>
+    using NonlocalDiffusion =
+      std::conditional_t<dim == 1, NonlocalWeakForm1D, ParticleDiffusion<dim>>;
+
+    template <int dim>
+    std::unique_ptr<NonlocalDiffusion<dim>>
+    make_nonlocal(const Geometry<dim>      &geometry,
+                  const Kernel             &kernel,
+                  const NonlocalParameters &parameters,
+                  const double              h)
+    {
+      if constexpr (dim == 1)
+        return std::make_unique<NonlocalWeakForm1D>(geometry,
+                                                    kernel,
+                                                    parameters.degree,
+                                                    h);
+      else
+        return std::make_unique<ParticleDiffusion<dim>>(
+          geometry, kernel, parameters.particle_spacing(h));
+    }
+  } // namespace
+
+
+
+  template <int dim>
   void
-  DiffusionScene1D::declare_parameters(ParameterHandler &prm)
+  DiffusionScene<dim>::declare_parameters(ParameterHandler &prm)
   {
     prm.declare_entry("Dimension",
                       "1",
                       Patterns::Integer(1, 3),
                       "Space dimension of the scene.");
-    Geometry<1>::declare_parameters(prm);
+    Geometry<dim>::declare_parameters(prm);
     NonlocalParameters::declare_parameters(prm);
-    PoissonProblem<1>::Parameters::declare_parameters(prm);
+    PoissonProblem<dim>::Parameters::declare_parameters(prm);
     ProblemData::declare_parameters(prm);
     Discretization::declare_parameters(prm);
     CouplingParameters::declare_parameters(prm);
@@ -42,16 +74,12 @@ namespace ltn
 
 
 
-  DiffusionScene1D::DiffusionScene1D(ParameterHandler  &prm,
-                                     const std::string &scene_name)
+  template <int dim>
+  DiffusionScene<dim>::DiffusionScene(ParameterHandler  &prm,
+                                      const std::string &scene_name)
     : scene_name(scene_name)
   {
-    const unsigned int dim = prm.get_integer("Dimension");
-    check_input(dim == 1,
-                "Dimension",
-                std::to_string(dim),
-                "this version of LtN runs 1D scenes (the particle "
-                "discretization for 2D and 3D is not available yet)");
+    Assert(prm.get_integer("Dimension") == dim, ExcInternalError());
     geometry.parse_parameters(prm);
     nonlocal_parameters.parse_parameters(prm);
     local_parameters.parse_parameters(prm);
@@ -65,17 +93,51 @@ namespace ltn
 
     const double h0 = discretization.mesh_size(0);
     // The largest horizon of the study is on the coarsest level.
-    geometry.validate(h0, nonlocal_parameters.horizon(h0));
+    const double eps0 = nonlocal_parameters.horizon(h0);
+    geometry.validate(h0, eps0);
+
+    if (dim > 1)
+      {
+        // The particle lattice fills Omega_n and resolves the horizon.
+        const double spacing = nonlocal_parameters.particle_spacing(h0);
+        // One particle per nodal spacing of FE_Q(p), or some local control
+        // modes go unobserved in the overlap and the system is singular.
+        check_input(nonlocal_parameters.spacing_ratio *
+                        local_parameters.degree <=
+                      1 + 1e-12,
+                    "Nonlocal model/Particle spacing to mesh size ratio",
+                    to_string(nonlocal_parameters.spacing_ratio),
+                    "at most 1/p = " + to_string(1. / local_parameters.degree) +
+                      " for FE_Q(p) on the local side, so that the particles "
+                      "of the overlap observe every local control");
+        check_input(spacing <= eps0 * (1 + 1e-12),
+                    "Nonlocal model/Particle spacing to mesh size ratio",
+                    to_string(nonlocal_parameters.spacing_ratio),
+                    "the particle spacing " + to_string(spacing) +
+                      " must not exceed the horizon " + to_string(eps0));
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double n = (geometry.nonlocal_region.upper[d] -
+                              geometry.nonlocal_region.lower[d]) /
+                             spacing;
+            check_input(std::abs(n - std::round(n)) < 1e-8 * n,
+                        "Nonlocal model/Particle spacing to mesh size ratio",
+                        to_string(nonlocal_parameters.spacing_ratio),
+                        "the particle spacing " + to_string(spacing) +
+                          " must divide the nonlocal region's extent " +
+                          to_string(n * spacing) + " a whole number of times");
+          }
+      }
 
     // Nonlocal Neumann conditions cannot be prescribed: where Omega_n touches
     // the body's boundary, its collar needs the volume constraint.
-    for (unsigned int face = 0; face < 2; ++face)
+    for (unsigned int face = 0; face < 2 * dim; ++face)
       check_input(!geometry.nonlocal_face_on_body_boundary(face) ||
                     local_parameters.dirichlet_faces.count(face) == 1,
                   "Local model/Dirichlet boundaries",
-                  Geometry<1>::face_name(face) + " missing",
+                  Geometry<dim>::face_name(face) + " missing",
                   "the nonlocal region touches face " +
-                    Geometry<1>::face_name(face) +
+                    Geometry<dim>::face_name(face) +
                     " of the body, whose collar needs the volume constraint: "
                     "list it among the Dirichlet boundaries (put Neumann "
                     "conditions on faces of the local region only)");
@@ -83,22 +145,23 @@ namespace ltn
     for (unsigned int level = 0; level < discretization.n_levels; ++level)
       {
         const double h = discretization.mesh_size(level);
-        problem_data.functions<1>(nonlocal_parameters.kernel(1, h), h);
+        problem_data.functions<dim>(nonlocal_parameters.kernel(dim, h), h);
       }
   }
 
 
 
+  template <int dim>
   RunSummary
-  DiffusionScene1D::run(const std::string  &output_directory,
-                        ConditionalOStream &out)
+  DiffusionScene<dim>::run(const std::string  &output_directory,
+                           ConditionalOStream &out)
   {
     Timer total_timer;
     solutions.clear();
 
     RunSummary summary;
     summary.scene = scene_name;
-    summary.dim   = 1;
+    summary.dim   = dim;
     summary.model = "diffusion";
 
     std::vector<std::pair<double, std::string>> nonlocal_files, local_files;
@@ -106,9 +169,9 @@ namespace ltn
     for (unsigned int level = 0; level < discretization.n_levels; ++level)
       {
         const double h      = discretization.mesh_size(level);
-        const Kernel kernel = nonlocal_parameters.kernel(1, h);
+        const Kernel kernel = nonlocal_parameters.kernel(dim, h);
         const double eps    = kernel.horizon();
-        const auto   data   = problem_data.functions<1>(kernel, h);
+        const auto   data   = problem_data.functions<dim>(kernel, h);
 
         ConditionalOStream silent(out.get_stream(), false);
         TimerOutput timer(silent, TimerOutput::never, TimerOutput::wall_times);
@@ -117,11 +180,10 @@ namespace ltn
         record.horizon = eps;
 
         timer.enter_subsection("setup meshes");
-        NonlocalWeakForm1D nonlocal(geometry,
-                                    kernel,
-                                    nonlocal_parameters.degree,
-                                    h);
-        PoissonProblem<1>  local(geometry, local_parameters, h);
+        const auto nonlocal_pointer =
+          make_nonlocal<dim>(geometry, kernel, nonlocal_parameters, h);
+        NonlocalDiffusion<dim> &nonlocal = *nonlocal_pointer;
+        PoissonProblem<dim>     local(geometry, local_parameters, h);
         timer.leave_subsection();
 
         timer.enter_subsection("assemble nonlocal");
@@ -135,12 +197,13 @@ namespace ltn
         timer.leave_subsection();
 
         timer.enter_subsection("assemble coupling");
-        const OverlapQuadrature<1> overlap = create_overlap_quadrature_1d(
-          geometry, eps, nonlocal.get_dof_handler(), local.get_dof_handler());
-        const CouplingSystem<1> system(nonlocal.get_model(),
-                                       local.get_model(),
-                                       overlap,
-                                       coupling_parameters.tikhonov_parameter);
+        const OverlapQuadrature<dim> overlap = create_overlap_quadrature(
+          geometry, eps, nonlocal, local.get_dof_handler());
+        const CouplingSystem<dim> system(
+          nonlocal.get_model(),
+          local.get_model(),
+          overlap,
+          coupling_parameters.tikhonov_parameter);
         timer.leave_subsection();
 
         timer.enter_subsection("solve");
@@ -149,7 +212,7 @@ namespace ltn
         const CouplingSolution &solution = solutions.back();
 
         timer.enter_subsection("postprocess");
-        record.n_nonlocal_dofs = nonlocal.get_dof_handler().n_dofs();
+        record.n_nonlocal_dofs = nonlocal.get_model().roles.size();
         record.n_local_dofs    = local.get_dof_handler().n_dofs();
         record.n_controls      = system.n_controls();
         record.solver_method   = coupling_parameters.method;
@@ -163,23 +226,19 @@ namespace ltn
             const auto  tol    = geometry.tolerance();
             record.has_errors  = true;
             record.nonlocal_errors =
-              field_errors<1>(nonlocal.get_dof_handler(),
-                              solution.fields[nonlocal_model],
-                              *data.exact_solution,
-                              [&](const Point<1> &p) {
-                                return region.contains_strictly(p, tol);
-                              });
+              nonlocal.errors(solution.fields[nonlocal_model],
+                              *data.exact_solution);
             record.local_errors =
-              field_errors<1>(local.get_dof_handler(),
-                              solution.fields[local_model],
-                              *data.exact_solution,
-                              [](const Point<1> &) { return true; });
+              field_errors<dim>(local.get_dof_handler(),
+                                solution.fields[local_model],
+                                *data.exact_solution,
+                                [](const Point<dim> &) { return true; });
             record.coupled_errors = record.nonlocal_errors;
-            record.coupled_errors.add(field_errors<1>(
+            record.coupled_errors.add(field_errors<dim>(
               local.get_dof_handler(),
               solution.fields[local_model],
               *data.exact_solution,
-              [&](const Point<1> &p) { return !region.contains(p, tol); }));
+              [&](const Point<dim> &p) { return !region.contains(p, tol); }));
           }
         timer.leave_subsection();
 
@@ -191,16 +250,15 @@ namespace ltn
             std::vector<Region> local_regions;
             for (const auto &p : local.get_support_points())
               local_regions.push_back(geometry.local_region_of(p, eps));
-            write_field_vtu<1>(nonlocal.get_dof_handler(),
+            write_nonlocal_vtu(nonlocal,
                                solution.fields[nonlocal_model],
                                data.exact_solution.get(),
-                               nonlocal.dof_regions(),
                                output_directory + "/nonlocal_field" + suffix);
-            write_field_vtu<1>(local.get_dof_handler(),
-                               solution.fields[local_model],
-                               data.exact_solution.get(),
-                               local_regions,
-                               output_directory + "/local_field" + suffix);
+            write_field_vtu<dim>(local.get_dof_handler(),
+                                 solution.fields[local_model],
+                                 data.exact_solution.get(),
+                                 local_regions,
+                                 output_directory + "/local_field" + suffix);
             nonlocal_files.emplace_back(level, "nonlocal_field" + suffix);
             local_files.emplace_back(level, "local_field" + suffix);
             write_level_collection(output_directory + "/nonlocal_field.pvd",
@@ -241,17 +299,23 @@ namespace ltn
 
 
 
+  template <int dim>
   const std::vector<CouplingSolution> &
-  DiffusionScene1D::get_solutions() const
+  DiffusionScene<dim>::get_solutions() const
   {
     return solutions;
   }
 
 
 
+  template <int dim>
   const std::string &
-  DiffusionScene1D::get_output_directory() const
+  DiffusionScene<dim>::get_output_directory() const
   {
     return output_directory;
   }
+
+  template class DiffusionScene<1>;
+  template class DiffusionScene<2>;
+  template class DiffusionScene<3>;
 } // namespace ltn

@@ -20,12 +20,14 @@ namespace ltn
   using namespace dealii;
 
   /**
-   * The 1D local-to-nonlocal diffusion scene of the seed: nonlocal diffusion
-   * in weak form (NonlocalWeakForm1D) on `Omega_n`, Poisson (PoissonProblem)
-   * on `Omega_l`, coupled by the optimality system (CouplingSystem) and
+   * A local-to-nonlocal diffusion scene: nonlocal diffusion on `Omega_n`
+   * (in 1D in weak form by finite elements, NonlocalWeakForm1D; in 2D and 3D
+   * in strong form on particles, ParticleDiffusion), Poisson on `Omega_l`
+   * (PoissonProblem), coupled by the optimality system (CouplingSystem) and
    * solved, level by level, by the method the `Coupling` subsection selects.
    */
-  class DiffusionScene1D
+  template <int dim>
+  class DiffusionScene
   {
   public:
     /** Declare the parameters of the scene and of everything it uses. */
@@ -36,12 +38,11 @@ namespace ltn
      * Read the scene from @p prm and validate all of it, for every level,
      * before anything runs: an InputError names the first bad parameter.
      */
-    DiffusionScene1D(ParameterHandler &prm, const std::string &scene_name);
+    DiffusionScene(ParameterHandler &prm, const std::string &scene_name);
 
     /**
      * Solve every level; write VTU files into @p output_directory when it is
-     * not empty and `Output/Write VTU` is set. Progress and the convergence
-     * table go to @p out.
+     * not empty and `Output/Write VTU` is set. Progress goes to @p out.
      */
     RunSummary
     run(const std::string &output_directory, ConditionalOStream &out);
@@ -55,15 +56,15 @@ namespace ltn
     get_output_directory() const;
 
   private:
-    std::string                   scene_name;
-    Geometry<1>                   geometry;
-    NonlocalParameters            nonlocal_parameters;
-    PoissonProblem<1>::Parameters local_parameters;
-    ProblemData                   problem_data;
-    Discretization                discretization;
-    CouplingParameters            coupling_parameters;
-    bool                          write_vtu = true;
-    std::string                   output_directory;
-    std::vector<CouplingSolution> solutions;
+    std::string                              scene_name;
+    Geometry<dim>                            geometry;
+    NonlocalParameters                       nonlocal_parameters;
+    typename PoissonProblem<dim>::Parameters local_parameters;
+    ProblemData                              problem_data;
+    Discretization                           discretization;
+    CouplingParameters                       coupling_parameters;
+    bool                                     write_vtu = true;
+    std::string                              output_directory;
+    std::vector<CouplingSolution>            solutions;
   };
 } // namespace ltn
