@@ -11,7 +11,7 @@ build="$here/build"
 jobs=$(nproc 2>/dev/null || echo 2)
 
 # Debian 12 packages LtN builds and tests with.
-packages=(cmake make g++ libdeal.ii-dev catch2 libeigen3-dev numdiff
+packages=(cmake make g++ git libdeal.ii-dev catch2 libeigen3-dev numdiff
           clang-format-16 python3)
 
 install_missing() {

@@ -9,6 +9,7 @@
 #include <ltn/output/field_output.h>
 #include <ltn/output/nonlocal_output.h>
 
+#include <cmath>
 #include <iomanip>
 #include <memory>
 #include <type_traits>
@@ -129,6 +130,22 @@ namespace ltn
           }
       }
 
+    check_input(!local_parameters.dirichlet_faces.empty(),
+                "Local model/Dirichlet boundaries",
+                "",
+                "at least one face: with Neumann conditions alone the "
+                "solution is only determined up to a constant");
+
+    // A study must stay within what a mesh can hold.
+    const double finest = discretization.mesh_size(discretization.n_levels - 1);
+    for (unsigned int d = 0; d < dim; ++d)
+      check_input((geometry.body.upper[d] - geometry.body.lower[d]) / finest <=
+                    1e5,
+                  "Discretization/Mesh size",
+                  to_string(h0),
+                  "the finest level (mesh size " + to_string(finest) +
+                    ") may have at most 1e5 cells across the body");
+
     // Nonlocal Neumann conditions cannot be prescribed: where Omega_n touches
     // the body's boundary, its collar needs the volume constraint.
     for (unsigned int face = 0; face < 2 * dim; ++face)
@@ -210,6 +227,13 @@ namespace ltn
         solutions.push_back(coupling_parameters.solve(system));
         timer.leave_subsection();
         const CouplingSolution &solution = solutions.back();
+        for (const auto &field : solution.fields)
+          for (const double value : field)
+            AssertThrow(std::isfinite(value),
+                        ExcMessage(
+                          "The solution is not finite: an expression of "
+                          "Problem data has values that are not (a division "
+                          "by zero, a logarithm of a negative number, ...)."));
 
         timer.enter_subsection("postprocess");
         record.n_nonlocal_dofs = nonlocal.get_model().roles.size();

@@ -93,8 +93,13 @@ namespace
       output_directory = "output/" + scene_name;
     if (root)
       {
-        std::filesystem::create_directories(output_directory);
+        std::error_code error;
+        std::filesystem::create_directories(output_directory, error);
         std::ofstream used(output_directory + "/used_parameters.prm");
+        ltn::check_input(!error && used.good(),
+                         "--output-dir (or Output/Directory)",
+                         output_directory,
+                         "a directory that can be created and written to");
         prm.print_parameters(used, ParameterHandler::PRM);
       }
     MPI_Barrier(MPI_COMM_WORLD);

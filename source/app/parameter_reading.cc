@@ -73,6 +73,10 @@ namespace ltn
           Utilities::trim(assignment.substr(0, equals)), '/');
         const std::string value =
           Utilities::trim(assignment.substr(equals + 1));
+        check_input(!path.empty() && !path.back().empty(),
+                    "--set",
+                    assignment,
+                    "\"Subsection/.../name=value\" with a parameter name");
         const std::string name = path.back();
         path.pop_back();
         check_input(path.empty() || prm.subsection_path_exists(path),
@@ -92,7 +96,9 @@ namespace ltn
               prm.leave_subsection();
             throw InputError(assignment.substr(0, equals),
                              value,
-                             short_message(error));
+                             short_message(error) +
+                               " (`ltn --print-parameters` lists every "
+                               "parameter and its allowed values)");
           }
         for (std::size_t i = 0; i < path.size(); ++i)
           prm.leave_subsection();

@@ -12,7 +12,17 @@ namespace ltn
   ErrorNorms::add(const ErrorNorms &other)
   {
     l2_squared += other.l2_squared;
-    linf = std::max(linf, other.linf);
+    add_pointwise(other.linf);
+  }
+
+
+
+  void
+  ErrorNorms::add_pointwise(const double error)
+  {
+    // Written so that a NaN error makes linf NaN (std::max would drop it).
+    if (!(std::abs(error) <= linf))
+      linf = std::abs(error);
   }
 
 
@@ -60,10 +70,8 @@ namespace ltn
           max_values.reinit(cell);
           max_values.get_function_values(field, values_at_max);
           for (unsigned int q = 0; q < max_rule.size(); ++q)
-            errors.linf =
-              std::max(errors.linf,
-                       std::abs(values_at_max[q] -
-                                exact.value(max_values.quadrature_point(q))));
+            errors.add_pointwise(values_at_max[q] -
+                                 exact.value(max_values.quadrature_point(q)));
         }
     return errors;
   }

@@ -15,12 +15,11 @@ namespace ltn
     const auto &overlap  = system.overlap;
 
     // Block offsets: [x_n | x_l | lambda_n | lambda_l].
+    const index n_x      = unknowns[0].n_unknowns() + unknowns[1].n_unknowns();
+    const index n_free_n = unknowns[0].free.size();
     const std::array<index, 2> x_offset      = {{0, unknowns[0].n_unknowns()}};
-    const std::array<index, 2> lambda_offset = {
-      {unknowns[0].n_unknowns() + unknowns[1].n_unknowns(),
-       unknowns[0].n_unknowns() + unknowns[1].n_unknowns() +
-         unknowns[0].free.size()}};
-    const index n = lambda_offset[1] + unknowns[1].free.size();
+    const std::array<index, 2> lambda_offset = {{n_x, n_x + n_free_n}};
+    const index                n = lambda_offset[1] + unknowns[1].free.size();
 
     // Row q of B = [E, -P] in the unknowns' numbering, and the part r_0 of
     // the mismatch that comes from fixed data.

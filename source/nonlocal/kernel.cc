@@ -5,26 +5,6 @@
 
 namespace ltn
 {
-  void
-  Kernel::declare_parameters(ParameterHandler &prm)
-  {
-    prm.declare_entry("Kernel",
-                      "constant",
-                      Patterns::Selection("constant|inverse distance|"
-                                          "fractional"),
-                      "The kernel gamma(|xi|) of nonlocal diffusion, zero "
-                      "beyond the horizon and normalized so that its second "
-                      "moment is one: `constant`, `inverse distance` "
-                      "(c/|xi|), or `fractional` (c |xi|^-(dim+2s)).");
-    prm.declare_entry("Fractional order",
-                      "0.5",
-                      Patterns::Double(0, 1),
-                      "The order s in (0,1) of the `fractional` kernel "
-                      "|xi|^-(dim+2s). Ignored by the other kernels.");
-  }
-
-
-
   Kernel::Kernel(const std::string &name,
                  const double       fractional_order,
                  const unsigned int dim,

@@ -8,7 +8,20 @@ namespace ltn
   {
     prm.enter_subsection("Nonlocal model");
     {
-      Kernel::declare_parameters(prm);
+      prm.declare_entry("Kernel",
+                        "constant",
+                        Patterns::Selection("constant|inverse distance|"
+                                            "fractional"),
+                        "The kernel gamma(|xi|) of nonlocal diffusion, zero "
+                        "beyond the horizon and normalized so that its second "
+                        "moment is one: `constant`, `inverse distance` "
+                        "(c/|xi|), or `fractional` (c |xi|^-(dim+2s)).");
+      prm.declare_entry("Fractional order",
+                        "0.5",
+                        Patterns::Double(0, 1),
+                        "The order s in (0,1) of the `fractional` kernel "
+                        "|xi|^-(dim+2s). Ignored by the other kernels.");
+
       prm.declare_entry("Horizon",
                         "0.125",
                         Patterns::Double(),

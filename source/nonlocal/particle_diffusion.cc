@@ -194,7 +194,7 @@ namespace ltn
         {
           const double e = field[i] - exact.value(positions[i]);
           errors.l2_squared += particle_volume() * e * e;
-          errors.linf = std::max(errors.linf, std::abs(e));
+          errors.add_pointwise(e);
         }
     return errors;
   }

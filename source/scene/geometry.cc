@@ -214,17 +214,21 @@ namespace ltn
                 "of the coarsest level: " +
                   to_string(h) + ")");
 
+    const Box<dim> shrunk = shrunk_nonlocal_region();
+    for (unsigned int d = 0; d < dim; ++d)
+      check_input(shrunk.upper[d] - shrunk.lower[d] > tol,
+                  "Geometry/Overlap width",
+                  to_string(overlap_width),
+                  "the overlap bands inside the nonlocal region's faces must "
+                  "leave part of it to the nonlocal model alone: the width "
+                  "must be less than the region's extent " +
+                    to_string(nonlocal_region.upper[d] -
+                              nonlocal_region.lower[d]) +
+                    " (half of it where both faces lie inside the body)");
     for (unsigned int f = 0; f < 2 * dim; ++f)
       if (!nonlocal_face_on_body_boundary(f))
         {
           const unsigned int d = f / 2;
-          const double       extent =
-            nonlocal_region.upper[d] - nonlocal_region.lower[d];
-          check_input(overlap_width < extent - tol,
-                      "Geometry/Overlap width",
-                      to_string(overlap_width),
-                      "must be less than the nonlocal region's extent " +
-                        to_string(extent) + " across face " + face_name(f));
           // The control collar (and the nonlocal mesh covering it) must stay
           // inside the body: it is where the local model observes u_n.
           const double room = (f % 2 == 0) ?

@@ -18,13 +18,16 @@ namespace
     for (std::size_t l = 1; l < levels.size(); ++l)
       {
         const auto  &c = levels[l - 1], &f = levels[l];
-        const double l2_rate = ltn::observed_rate(
-          c.coupled_errors.l2(), f.coupled_errors.l2(), c.h, f.h);
-        const double max_rate = ltn::observed_rate(
-          c.coupled_errors.linf, f.coupled_errors.linf, c.h, f.h);
+        const double l2_rate  = ltn::observed_rate(c.coupled_errors.l2(),
+                                                  f.coupled_errors.l2(),
+                                                  c.h,
+                                                  f.h);
+        const double max_rate = ltn::observed_rate(c.coupled_errors.linf,
+                                                   f.coupled_errors.linf,
+                                                   c.h,
+                                                   f.h);
         INFO("level " << l << " h " << f.h << " eps " << f.horizon
-                      << ": L2 rate " << l2_rate << ", max rate "
-                      << max_rate);
+                      << ": L2 rate " << l2_rate << ", max rate " << max_rate);
         CHECK(l2_rate >= min_l2_rate);
         CHECK(max_rate >= min_max_rate);
       }
@@ -63,13 +66,12 @@ TEST_CASE("2D asymptotic compatibility with eps = m h",
 TEST_CASE("3D asymptotic compatibility with eps = 2 h",
           "[particles][convergence]")
 {
-  const SceneRun run = run_scene(
-    "diffusion_3d_convergence",
-    {"Nonlocal model/Horizon to mesh size ratio=2",
-     "Problem data/Nonlocal right-hand side="
-     "3*pi^2*sin(pi*x)*cos(pi*y)*cos(pi*z)",
-     "Discretization/Mesh size=0.25",
-     "Discretization/Number of levels=3"});
+  const SceneRun run = run_scene("diffusion_3d_convergence",
+                                 {"Nonlocal model/Horizon to mesh size ratio=2",
+                                  "Problem data/Nonlocal right-hand side="
+                                  "3*pi^2*sin(pi*x)*cos(pi*y)*cos(pi*z)",
+                                  "Discretization/Mesh size=0.25",
+                                  "Discretization/Number of levels=3"});
   // Observed: L2 rates 2.36 and 2.13, max rates 1.63 and 1.89; the max
   // error on h = 1/4 is not yet asymptotic.
   check_coupled_rates(run.summary, 1.9, 1.6);

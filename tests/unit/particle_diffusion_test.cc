@@ -135,10 +135,10 @@ TEST_CASE("stencil moments match the kernel's", "[particles]")
         CHECK(second == Approx(1).epsilon(1e-12));
         CHECK(
           fourth ==
-          Approx(LatticeStencil<2>::exact_moment(k2, {4, 0})).epsilon(1e-12));
+          Approx(LatticeStencil<2>::exact_moment(k2, {{4, 0}})).epsilon(1e-12));
         CHECK(
           mixed ==
-          Approx(LatticeStencil<2>::exact_moment(k2, {2, 2})).epsilon(1e-12));
+          Approx(LatticeStencil<2>::exact_moment(k2, {{2, 2}})).epsilon(1e-12));
         // Every coefficient positive: the operator stays an M-matrix.
         for (const double a : stencil.coefficients())
           CHECK(a > 0);

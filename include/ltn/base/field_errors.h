@@ -22,6 +22,10 @@ namespace ltn
     void
     add(const ErrorNorms &other);
 
+    /** Account for a pointwise error in the max norm (NaN propagates). */
+    void
+    add_pointwise(const double error);
+
     double
     l2() const;
   };

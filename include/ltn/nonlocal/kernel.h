@@ -1,6 +1,6 @@
 #pragma once
 
-#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 
 #include <string>
 
@@ -28,10 +28,6 @@ namespace ltn
   class Kernel
   {
   public:
-    /** Declare the kernel's parameters in the current subsection. */
-    static void
-    declare_parameters(ParameterHandler &prm);
-
     Kernel(const std::string &name,
            const double       fractional_order,
            const unsigned int dim,
