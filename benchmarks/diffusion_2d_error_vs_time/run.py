@@ -1,0 +1,93 @@
+#!/usr/bin/env python3
+"""Error against wall time for the 2D diffusion coupling, one curve per solver
+method: runs parameter_files/diffusion_2d_convergence.prm once per method,
+reads each run's summary.json, and writes results.csv and (with matplotlib)
+error_vs_time.png next to this script.
+
+usage: python3 run.py [--ltn PATH] [--levels N] [--out DIR] [--quick]
+
+--quick runs two coarse levels (a smoke test that keeps the benchmark
+working; its numbers mean nothing).
+"""
+import argparse
+import csv
+import json
+import os
+import subprocess
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+root = os.path.dirname(os.path.dirname(here))
+
+parser = argparse.ArgumentParser()
+parser.add_argument("--ltn", default=os.path.join(root, "build", "ltn"))
+parser.add_argument("--levels", type=int, default=3)
+parser.add_argument("--out", default=here)
+parser.add_argument("--quick", action="store_true")
+args = parser.parse_args()
+
+methods = ["full space direct", "reduced space cg"]
+scene = os.path.join(root, "parameter_files", "diffusion_2d_convergence.prm")
+levels = 2 if args.quick else args.levels
+rows = []
+for method in methods:
+    out = os.path.join(args.out, "runs", method.replace(" ", "_"))
+    subprocess.run([args.ltn, scene,
+                    "--set", f"Coupling/Method={method}",
+                    "--set", f"Discretization/Number of levels={levels}",
+                    "--set", "Output/Write VTU=false",
+                    "--output-dir", out],
+                   check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    for entry in summary["convergence"]:
+        t = entry["timings"]
+        rows.append({
+            "method": method,
+            "h": entry["h"],
+            "eps": entry["horizon"],
+            "particles": entry["n_nonlocal_dofs"],
+            "fem_dofs": entry["n_local_dofs"],
+            "controls": entry["n_controls"],
+            "iterations": entry["solver"]["iterations"],
+            "l2_error": entry["errors"]["coupled"]["l2"],
+            "max_error": entry["errors"]["coupled"]["linf"],
+            "solve_s": t["solve"],
+            "wall_s": sum(v for k, v in t.items() if k != "output"),
+        })
+
+csv_path = os.path.join(args.out, "results.csv")
+with open(csv_path, "w", newline="") as f:
+    writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+    writer.writeheader()
+    writer.writerows(rows)
+print(f"wrote {csv_path}")
+for r in rows:
+    print(f"{r['method']:18s} h={r['h']:<9.4g} particles={r['particles']:<6d} "
+          f"iter={r['iterations']:<4d} L2={r['l2_error']:.3e} "
+          f"wall={r['wall_s']:.3f}s")
+
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+except ImportError:
+    print("matplotlib not found (Debian: python3-matplotlib): no chart")
+    sys.exit(0)
+figure, axis = plt.subplots(figsize=(6, 4.5))
+for method in methods:
+    mine = [r for r in rows if r["method"] == method]
+    axis.loglog([r["wall_s"] for r in mine], [r["l2_error"] for r in mine],
+                "o-", label=method)
+    for r in mine:
+        axis.annotate(f"h={r['h']:.3g}", (r["wall_s"], r["l2_error"]),
+                      fontsize=7, textcoords="offset points", xytext=(4, 4))
+axis.set_xlabel("wall time per level (s)")
+axis.set_ylabel("coupled L2 error")
+axis.set_title("2D diffusion coupling, eps = 1/8 fixed")
+axis.grid(True, which="both", alpha=0.3)
+axis.legend()
+figure.tight_layout()
+png_path = os.path.join(args.out, "error_vs_time.png")
+figure.savefig(png_path, dpi=110)
+print(f"wrote {png_path}")
