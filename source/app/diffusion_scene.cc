@@ -3,6 +3,7 @@
 #include <ltn/app/diffusion_scene.h>
 #include <ltn/base/field_errors.h>
 #include <ltn/base/input_error.h>
+#include <ltn/coupling/model_solver.h>
 #include <ltn/coupling/overlap_quadrature.h>
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
 #include <ltn/nonlocal/particle_diffusion.h>
@@ -11,6 +12,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <memory>
 #include <type_traits>
 
@@ -97,7 +99,7 @@ namespace ltn
     const double eps0 = nonlocal_parameters.horizon(h0);
     geometry.validate(h0, eps0);
 
-    if (dim > 1)
+    if (dim > 1 && geometry.has_nonlocal_model())
       {
         // The particle lattice fills Omega_n and resolves the horizon.
         const double spacing = nonlocal_parameters.particle_spacing(h0);
@@ -149,7 +151,8 @@ namespace ltn
     // Nonlocal Neumann conditions cannot be prescribed: where Omega_n touches
     // the body's boundary, its collar needs the volume constraint.
     for (unsigned int face = 0; face < 2 * dim; ++face)
-      check_input(!geometry.nonlocal_face_on_body_boundary(face) ||
+      check_input(!geometry.has_nonlocal_model() ||
+                    !geometry.nonlocal_face_on_body_boundary(face) ||
                     local_parameters.dirichlet_faces.count(face) == 1,
                   "Local model/Dirichlet boundaries",
                   Geometry<dim>::face_name(face) + " missing",
@@ -196,37 +199,70 @@ namespace ltn
         record.h       = h;
         record.horizon = eps;
 
+        // The models of the scene: both, or one on the whole body.
         timer.enter_subsection("setup meshes");
-        const auto nonlocal_pointer =
-          make_nonlocal<dim>(geometry, kernel, nonlocal_parameters, h);
-        NonlocalDiffusion<dim> &nonlocal = *nonlocal_pointer;
-        PoissonProblem<dim>     local(geometry, local_parameters, h);
+        std::unique_ptr<NonlocalDiffusion<dim>> nonlocal;
+        std::unique_ptr<PoissonProblem<dim>>    local;
+        if (geometry.has_nonlocal_model())
+          nonlocal =
+            make_nonlocal<dim>(geometry, kernel, nonlocal_parameters, h);
+        if (geometry.has_local_model())
+          local = std::make_unique<PoissonProblem<dim>>(geometry,
+                                                        local_parameters,
+                                                        h);
         timer.leave_subsection();
 
-        timer.enter_subsection("assemble nonlocal");
-        nonlocal.assemble(*data.nonlocal_rhs, *data.volume_constraint_data);
-        timer.leave_subsection();
+        if (nonlocal)
+          {
+            timer.enter_subsection("assemble nonlocal");
+            nonlocal->assemble(*data.nonlocal_rhs,
+                               *data.volume_constraint_data);
+            timer.leave_subsection();
+          }
+        if (local)
+          {
+            timer.enter_subsection("assemble local");
+            local->assemble(*data.local_rhs,
+                            *data.boundary_data,
+                            *data.boundary_gradient);
+            timer.leave_subsection();
+          }
 
-        timer.enter_subsection("assemble local");
-        local.assemble(*data.local_rhs,
-                       *data.boundary_data,
-                       *data.boundary_gradient);
-        timer.leave_subsection();
+        CouplingSolution solution;
+        if (nonlocal && local)
+          {
+            timer.enter_subsection("assemble coupling");
+            const OverlapQuadrature<dim> overlap = create_overlap_quadrature(
+              geometry, eps, *nonlocal, local->get_dof_handler());
+            const CouplingSystem<dim> system(
+              nonlocal->get_model(),
+              local->get_model(),
+              overlap,
+              coupling_parameters.tikhonov_parameter);
+            timer.leave_subsection();
 
-        timer.enter_subsection("assemble coupling");
-        const OverlapQuadrature<dim> overlap = create_overlap_quadrature(
-          geometry, eps, nonlocal, local.get_dof_handler());
-        const CouplingSystem<dim> system(
-          nonlocal.get_model(),
-          local.get_model(),
-          overlap,
-          coupling_parameters.tikhonov_parameter);
-        timer.leave_subsection();
-
-        timer.enter_subsection("solve");
-        solutions.push_back(coupling_parameters.solve(system));
-        timer.leave_subsection();
-        const CouplingSolution &solution = solutions.back();
+            timer.enter_subsection("solve");
+            solution = coupling_parameters.solve(system);
+            timer.leave_subsection();
+            record.n_controls    = system.n_controls();
+            record.solver_method = coupling_parameters.method;
+            record.mismatch_J =
+              system.objective(solution.fields[0], solution.fields[1]);
+          }
+        else
+          {
+            // One model on the whole body: its own direct solve.
+            timer.enter_subsection("solve");
+            const unsigned int   k = nonlocal ? nonlocal_model : local_model;
+            const DiscreteModel &model =
+              nonlocal ? nonlocal->get_model() : local->get_model();
+            const ModelUnknowns unknowns(model);
+            solution.fields[k] =
+              ModelSolver(model, unknowns).forward(Vector<double>(0), true);
+            solution.iterations = 1;
+            timer.leave_subsection();
+            record.solver_method = "direct";
+          }
         for (const auto &field : solution.fields)
           for (const double value : field)
             AssertThrow(std::isfinite(value),
@@ -234,35 +270,45 @@ namespace ltn
                           "The solution is not finite: an expression of "
                           "Problem data has values that are not (a division "
                           "by zero, a logarithm of a negative number, ...)."));
+        solutions.push_back(solution);
 
         timer.enter_subsection("postprocess");
-        record.n_nonlocal_dofs = nonlocal.get_model().roles.size();
-        record.n_local_dofs    = local.get_dof_handler().n_dofs();
-        record.n_controls      = system.n_controls();
-        record.solver_method   = coupling_parameters.method;
-        record.iterations      = solution.iterations;
-        record.residual        = solution.residual;
-        record.mismatch_J = system.objective(solution.fields[nonlocal_model],
-                                             solution.fields[local_model]);
+        record.n_nonlocal_dofs =
+          nonlocal ? nonlocal->get_model().roles.size() : 0;
+        record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
+        record.iterations   = solution.iterations;
+        record.residual     = solution.residual;
         if (data.exact_solution)
           {
-            const auto &region = geometry.nonlocal_region;
-            const auto  tol    = geometry.tolerance();
-            record.has_errors  = true;
+            // A missing model's errors are NaN, written as null.
+            const ErrorNorms none{std::numeric_limits<double>::quiet_NaN(),
+                                  std::numeric_limits<double>::quiet_NaN()};
+            const auto      &region = geometry.nonlocal_region;
+            const auto       tol    = geometry.tolerance();
+            record.has_errors       = true;
             record.nonlocal_errors =
-              nonlocal.errors(solution.fields[nonlocal_model],
-                              *data.exact_solution);
+              nonlocal ? nonlocal->errors(solution.fields[nonlocal_model],
+                                          *data.exact_solution) :
+                         none;
             record.local_errors =
-              field_errors<dim>(local.get_dof_handler(),
-                                solution.fields[local_model],
-                                *data.exact_solution,
-                                [](const Point<dim> &) { return true; });
-            record.coupled_errors = record.nonlocal_errors;
-            record.coupled_errors.add(field_errors<dim>(
-              local.get_dof_handler(),
-              solution.fields[local_model],
-              *data.exact_solution,
-              [&](const Point<dim> &p) { return !region.contains(p, tol); }));
+              local ?
+                field_errors<dim>(local->get_dof_handler(),
+                                  solution.fields[local_model],
+                                  *data.exact_solution,
+                                  [](const Point<dim> &) { return true; }) :
+                none;
+            // The LtN solution: u_n on Omega_n, u_l on the rest.
+            record.coupled_errors =
+              nonlocal ? record.nonlocal_errors : ErrorNorms();
+            if (local)
+              record.coupled_errors.add(
+                field_errors<dim>(local->get_dof_handler(),
+                                  solution.fields[local_model],
+                                  *data.exact_solution,
+                                  [&](const Point<dim> &p) {
+                                    return !nonlocal ||
+                                           !region.contains(p, tol);
+                                  }));
           }
         timer.leave_subsection();
 
@@ -271,27 +317,36 @@ namespace ltn
             timer.enter_subsection("output");
             const std::string suffix =
               "_level-" + Utilities::int_to_string(level, 2) + ".vtu";
-            std::vector<Region> local_regions;
-            for (const auto &p : local.get_support_points())
-              local_regions.push_back(geometry.local_region_of(p, eps));
-            write_nonlocal_vtu(nonlocal,
-                               solution.fields[nonlocal_model],
-                               data.exact_solution.get(),
-                               output_directory + "/nonlocal_field" + suffix);
-            write_field_vtu<dim>(local.get_dof_handler(),
-                                 solution.fields[local_model],
-                                 data.exact_solution.get(),
-                                 local_regions,
-                                 output_directory + "/local_field" + suffix);
-            nonlocal_files.emplace_back(level, "nonlocal_field" + suffix);
-            local_files.emplace_back(level, "local_field" + suffix);
-            write_level_collection(output_directory + "/nonlocal_field.pvd",
-                                   nonlocal_files);
-            write_level_collection(output_directory + "/local_field.pvd",
-                                   local_files);
+            if (nonlocal)
+              {
+                write_nonlocal_vtu(*nonlocal,
+                                   solution.fields[nonlocal_model],
+                                   data.exact_solution.get(),
+                                   output_directory + "/nonlocal_field" +
+                                     suffix);
+                nonlocal_files.emplace_back(level, "nonlocal_field" + suffix);
+                write_level_collection(output_directory + "/nonlocal_field.pvd",
+                                       nonlocal_files);
+              }
+            if (local)
+              {
+                std::vector<Region> local_regions;
+                for (const auto &p : local->get_support_points())
+                  local_regions.push_back(geometry.local_region_of(p, eps));
+                write_field_vtu<dim>(local->get_dof_handler(),
+                                     solution.fields[local_model],
+                                     data.exact_solution.get(),
+                                     local_regions,
+                                     output_directory + "/local_field" +
+                                       suffix);
+                local_files.emplace_back(level, "local_field" + suffix);
+                write_level_collection(output_directory + "/local_field.pvd",
+                                       local_files);
+              }
             timer.leave_subsection();
           }
 
+        const auto times = timer.get_summary_data(TimerOutput::total_wall_time);
         for (const std::string phase : {"setup meshes",
                                         "assemble nonlocal",
                                         "assemble local",
@@ -300,8 +355,6 @@ namespace ltn
                                         "postprocess",
                                         "output"})
           {
-            const auto times =
-              timer.get_summary_data(TimerOutput::total_wall_time);
             const auto entry = times.find(phase);
             record.timings.emplace_back(phase,
                                         entry == times.end() ? 0. :

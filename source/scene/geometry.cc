@@ -123,6 +123,15 @@ namespace ltn
                         "1",
                         Patterns::List(Patterns::Double(), 1, 3),
                         "Upper corner of the nonlocal region Omega_n.");
+      prm.declare_entry("Models",
+                        "coupled",
+                        Patterns::Selection("coupled|nonlocal only|local only"),
+                        "`coupled`: the nonlocal model on the nonlocal region, "
+                        "the local model on the rest, coupled on the overlap. "
+                        "`nonlocal only` / `local only`: one model on the "
+                        "whole body (the nonlocal region's corners and the "
+                        "overlap width are then ignored), to compare a "
+                        "coupled result with.");
       prm.declare_entry("Overlap width",
                         "0.25",
                         Patterns::Double(),
@@ -148,7 +157,13 @@ namespace ltn
         parse_point<dim>(prm, "Nonlocal region lower corner", "Geometry");
       nonlocal_region.upper =
         parse_point<dim>(prm, "Nonlocal region upper corner", "Geometry");
-      overlap_width = prm.get_double("Overlap width");
+      overlap_width            = prm.get_double("Overlap width");
+      const std::string choice = prm.get("Models");
+      models = (choice == "nonlocal only") ? Models::nonlocal_only :
+               (choice == "local only")    ? Models::local_only :
+                                             Models::coupled;
+      if (models == Models::nonlocal_only)
+        nonlocal_region = body;
     }
     prm.leave_subsection();
   }
@@ -192,6 +207,18 @@ namespace ltn
                 "the nonlocal region must lie inside the body " +
                   box_to_string(body));
 
+    if (models != Models::coupled)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          check_input(is_multiple(body.upper[d] - body.lower[d], h),
+                      "Discretization/Mesh size",
+                      to_string(h),
+                      "the mesh size must divide the body's extent (" +
+                        to_string(body.upper[d] - body.lower[d]) +
+                        ") a whole number of times");
+        return;
+      }
+
     bool has_interior_face = false;
     for (unsigned int f = 0; f < 2 * dim; ++f)
       has_interior_face |= !nonlocal_face_on_body_boundary(f);
@@ -199,7 +226,8 @@ namespace ltn
                 "Geometry/Nonlocal region upper corner",
                 point_to_string(&nonlocal_region.upper[0], dim),
                 "the nonlocal region covers the whole body, which leaves no "
-                "local region to couple to; it needs a face inside the body");
+                "local region to couple to; it needs a face inside the body "
+                "(or set Geometry/Models = nonlocal only)");
 
     check_input(overlap_width > 0,
                 "Geometry/Overlap width",
@@ -314,6 +342,8 @@ namespace ltn
             removed.upper[f / 2] += diameter;
         }
     const double tol = tolerance();
+    if (models != Models::coupled)
+      return models == Models::local_only && body.contains(p, tol);
     return body.contains(p, tol) && !removed.contains_strictly(p, tol);
   }
 
@@ -359,6 +389,24 @@ namespace ltn
   Geometry<dim>::local_region_of(const Point<dim> &p, const double range) const
   {
     return in_overlap(p, range) ? Region::overlap : Region::local;
+  }
+
+
+
+  template <int dim>
+  bool
+  Geometry<dim>::has_nonlocal_model() const
+  {
+    return models != Models::local_only;
+  }
+
+
+
+  template <int dim>
+  bool
+  Geometry<dim>::has_local_model() const
+  {
+    return models != Models::nonlocal_only;
   }
 
 

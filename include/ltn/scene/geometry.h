@@ -64,6 +64,17 @@ namespace ltn
   class Geometry
   {
   public:
+    /**
+     * Which models a scene runs: both, coupled; or one of them on the whole
+     * body, the reference a coupled result is compared with.
+     */
+    enum class Models
+    {
+      coupled,
+      nonlocal_only,
+      local_only
+    };
+
     static void
     declare_parameters(ParameterHandler &prm);
 
@@ -121,7 +132,17 @@ namespace ltn
     double
     tolerance() const;
 
+    /** Does the scene have a nonlocal model? */
+    bool
+    has_nonlocal_model() const;
+
+    /** Does the scene have a local model? */
+    bool
+    has_local_model() const;
+
+    Models   models = Models::coupled;
     Box<dim> body;
+    /** `Omega_n`; the body itself in a `nonlocal only` scene. */
     Box<dim> nonlocal_region;
     double   overlap_width = 0;
   };
