@@ -13,32 +13,28 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vtu_fields import read_vtu  # noqa: E402
 
 REGIONS = ["nonlocal", "physical collar", "control collar", "overlap", "local"]
 
 
-def read(path):
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    grid = reader.GetOutput()
-    x = vtk_to_numpy(grid.GetPoints().GetData())[:, 0]
-    data = grid.GetPointData()
-    fields = {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i))
-              for i in range(data.GetNumberOfArrays())}
-    order = x.argsort()
-    return x[order], {k: v[order] for k, v in fields.items()}
-
+def read_sorted(path):
+    """The x coordinates, left to right, and the fields in that order."""
+    points, fields = read_vtu(path)
+    order = points[:, 0].argsort()
+    return points[order, 0], {k: v[order] for k, v in fields.items()}
 
 directory = sys.argv[1]
 level = int(sys.argv[2]) if len(sys.argv) > 2 else 0
 png = sys.argv[3] if len(sys.argv) > 3 else os.path.join(
     directory, f"fields_level-{level:02d}.png")
 
-xn, n = read(os.path.join(directory, f"nonlocal_field_level-{level:02d}.vtu"))
-xl, l = read(os.path.join(directory, f"local_field_level-{level:02d}.vtu"))
+xn, n = read_sorted(
+    os.path.join(directory, f"nonlocal_field_level-{level:02d}.vtu"))
+xl, l = read_sorted(
+    os.path.join(directory, f"local_field_level-{level:02d}.vtu"))
 
 figure, (top, middle, bottom) = plt.subplots(
     3, 1, sharex=True, figsize=(8, 7), height_ratios=[3, 2, 1])

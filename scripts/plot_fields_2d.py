@@ -14,27 +14,19 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-import vtk
-from vtk.util.numpy_support import vtk_to_numpy
 
-
-def read(path):
-    reader = vtk.vtkXMLUnstructuredGridReader()
-    reader.SetFileName(path)
-    reader.Update()
-    grid = reader.GetOutput()
-    data = grid.GetPointData()
-    return (vtk_to_numpy(grid.GetPoints().GetData()),
-            {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i))
-             for i in range(data.GetNumberOfArrays())})
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vtu_fields import read_vtu  # noqa: E402
 
 
 directory = sys.argv[1]
 level = int(sys.argv[2]) if len(sys.argv) > 2 else 0
 png = sys.argv[3] if len(sys.argv) > 3 else os.path.join(
     directory, f"fields_level-{level:02d}.png")
-xn, n = read(os.path.join(directory, f"nonlocal_field_level-{level:02d}.vtu"))
-xl, l = read(os.path.join(directory, f"local_field_level-{level:02d}.vtu"))
+xn, n = read_vtu(
+    os.path.join(directory, f"nonlocal_field_level-{level:02d}.vtu"))
+xl, l = read_vtu(
+    os.path.join(directory, f"local_field_level-{level:02d}.vtu"))
 
 keys = [k for k in ("u", "error") if k in n]
 figure, axes = plt.subplots(1, len(keys) + 1, figsize=(5 * (len(keys) + 1), 4.2))

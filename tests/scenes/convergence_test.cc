@@ -18,22 +18,7 @@ namespace
     const auto &levels = summary.levels;
     REQUIRE(levels.size() >= 5);
     CHECK(levels.front().coupled_errors.l2() < max_coarse_l2);
-    for (std::size_t l = 1; l < levels.size(); ++l)
-      {
-        const auto  &c = levels[l - 1], &f = levels[l];
-        const double l2_rate  = ltn::observed_rate(c.coupled_errors.l2(),
-                                                  f.coupled_errors.l2(),
-                                                  c.h,
-                                                  f.h);
-        const double max_rate = ltn::observed_rate(c.coupled_errors.linf,
-                                                   f.coupled_errors.linf,
-                                                   c.h,
-                                                   f.h);
-        INFO("level " << l << " h " << f.h << " eps " << f.horizon
-                      << ": L2 rate " << l2_rate << ", max rate " << max_rate);
-        CHECK(l2_rate >= min_rate);
-        CHECK(max_rate >= min_rate);
-      }
+    check_coupled_rates(summary, min_rate, min_rate);
     // The nonlocal part alone is pre-asymptotic on coarse levels for the
     // fractional kernels (rates 1.78, 1.89, 1.95, 1.97, 1.99 for s = 0.5):
     // require the rate where it has settled, on the finest refinement.

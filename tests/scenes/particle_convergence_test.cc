@@ -6,36 +6,6 @@
 
 #include "scene_run.h"
 
-namespace
-{
-  /** Rates of the coupled errors over every refinement. */
-  void
-  check_coupled_rates(const ltn::RunSummary &summary,
-                      const double           min_l2_rate,
-                      const double           min_max_rate)
-  {
-    const auto &levels = summary.levels;
-    for (std::size_t l = 1; l < levels.size(); ++l)
-      {
-        const auto  &c = levels[l - 1], &f = levels[l];
-        const double l2_rate  = ltn::observed_rate(c.coupled_errors.l2(),
-                                                  f.coupled_errors.l2(),
-                                                  c.h,
-                                                  f.h);
-        const double max_rate = ltn::observed_rate(c.coupled_errors.linf,
-                                                   f.coupled_errors.linf,
-                                                   c.h,
-                                                   f.h);
-        INFO("level " << l << " h " << f.h << " eps " << f.horizon
-                      << ": L2 rate " << l2_rate << ", max rate " << max_rate);
-        CHECK(l2_rate >= min_l2_rate);
-        CHECK(max_rate >= min_max_rate);
-      }
-  }
-} // namespace
-
-
-
 TEST_CASE("2D second order at fixed horizon against the nonlocal solution",
           "[particles][convergence]")
 {

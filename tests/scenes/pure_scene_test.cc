@@ -1,16 +1,15 @@
 // The same body solved by one model alone, through the same executable and
 // .prm: the references a coupled result is compared with.
 
-#include <catch2/catch.hpp>
-
 #include <ltn/base/input_error.h>
 
-#include "scene_run.h"
+#include <catch2/catch.hpp>
 
 #include <cmath>
 
-TEST_CASE("all-local and all-nonlocal solves of the coupled scenes",
-          "[pure]")
+#include "scene_run.h"
+
+TEST_CASE("all-local and all-nonlocal solves of the coupled scenes", "[pure]")
 {
   for (const std::string scene :
        {"diffusion_1d_convergence", "diffusion_2d_convergence"})

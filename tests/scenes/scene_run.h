@@ -9,6 +9,8 @@
 #include <ltn/app/diffusion_scene.h>
 #include <ltn/app/parameter_reading.h>
 
+#include <catch2/catch.hpp>
+
 #include <iostream>
 #include <string>
 #include <vector>
@@ -46,6 +48,34 @@ run_scene(const std::string &scene, const std::vector<std::string> &sets = {})
         solve(ltn::DiffusionScene<3>(prm, scene));
     }
   return run;
+}
+
+/**
+ * Check the observed rates of the coupled L2 and max errors on every
+ * refinement of a run (a Catch2 CHECK each).
+ */
+inline void
+check_coupled_rates(const ltn::RunSummary &summary,
+                    const double           min_l2_rate,
+                    const double           min_max_rate)
+{
+  const auto &levels = summary.levels;
+  for (std::size_t l = 1; l < levels.size(); ++l)
+    {
+      const auto  &c = levels[l - 1], &f = levels[l];
+      const double l2_rate  = ltn::observed_rate(c.coupled_errors.l2(),
+                                                f.coupled_errors.l2(),
+                                                c.h,
+                                                f.h);
+      const double max_rate = ltn::observed_rate(c.coupled_errors.linf,
+                                                 f.coupled_errors.linf,
+                                                 c.h,
+                                                 f.h);
+      INFO("level " << l << " h " << f.h << " eps " << f.horizon << ": L2 rate "
+                    << l2_rate << ", max rate " << max_rate);
+      CHECK(l2_rate >= min_l2_rate);
+      CHECK(max_rate >= min_max_rate);
+    }
 }
 
 /** max_i |a_i - b_i| / max_i |b_i| over both fields of two solutions. */

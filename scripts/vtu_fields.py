@@ -1,0 +1,15 @@
+"""Read the point fields of an LtN VTU file (a mesh or particles)."""
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+
+def read_vtu(path):
+    """Return (points, {field name: values}) of the VTU file at path."""
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput()
+    data = grid.GetPointData()
+    return (vtk_to_numpy(grid.GetPoints().GetData()),
+            {data.GetArrayName(i): vtk_to_numpy(data.GetArray(i))
+             for i in range(data.GetNumberOfArrays())})
