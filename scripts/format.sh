@@ -4,7 +4,8 @@
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$here"
-mapfile -t files < <(git ls-files '*.h' '*.cc')
+# Tracked and new (untracked, not ignored) files alike.
+mapfile -t files < <(git ls-files --cached --others --exclude-standard '*.h' '*.cc')
 if [ "${1:-}" = "--check" ]; then
   clang-format-16 --dry-run --Werror "${files[@]}"
   echo "formatting OK (${#files[@]} files)"
