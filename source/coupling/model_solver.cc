@@ -96,12 +96,4 @@ namespace ltn
       gradient[c] += z[unknowns.control[c]];
     return gradient;
   }
-
-
-
-  const ModelUnknowns &
-  ModelSolver::get_unknowns() const
-  {
-    return unknowns;
-  }
 } // namespace ltn

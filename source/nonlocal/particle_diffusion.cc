@@ -163,15 +163,6 @@ namespace ltn
 
 
   template <int dim>
-  const LatticeStencil<dim> &
-  ParticleDiffusion<dim>::get_stencil() const
-  {
-    return stencil;
-  }
-
-
-
-  template <int dim>
   std::vector<Region>
   ParticleDiffusion<dim>::regions() const
   {

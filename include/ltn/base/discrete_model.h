@@ -46,9 +46,5 @@ namespace ltn
     Vector<double>       rhs;
     Vector<double>       fixed_values;
     std::vector<DofRole> roles;
-
-    /** The number of degrees of freedom with role @p role. */
-    types::global_dof_index
-    count(const DofRole role) const;
   };
 } // namespace ltn

@@ -41,9 +41,6 @@ namespace ltn
     Vector<double>
     adjoint(const Vector<double> &z) const;
 
-    const ModelUnknowns &
-    get_unknowns() const;
-
   private:
     const DiscreteModel &model;
     const ModelUnknowns &unknowns;

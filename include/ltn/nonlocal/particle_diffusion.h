@@ -52,9 +52,6 @@ namespace ltn
     double
     particle_volume() const;
 
-    const LatticeStencil<dim> &
-    get_stencil() const;
-
     /** The region tag of every particle. */
     std::vector<Region>
     regions() const;
