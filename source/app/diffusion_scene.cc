@@ -193,182 +193,227 @@ namespace ltn
         const double eps    = kernel.horizon();
         const auto   data   = problem_data.functions<dim>(kernel, h);
 
-        ConditionalOStream silent(out.get_stream(), false);
-        TimerOutput timer(silent, TimerOutput::never, TimerOutput::wall_times);
-        LevelRecord record;
-        record.h       = h;
-        record.horizon = eps;
-
-        // The models of the scene: both, or one on the whole body.
-        timer.enter_subsection("setup meshes");
+        // The models of the scene: both, or one on the whole body. The local
+        // mesh may be refined adaptively within a level.
         std::unique_ptr<NonlocalDiffusion<dim>> nonlocal;
         std::unique_ptr<PoissonProblem<dim>>    local;
-        if (geometry.has_nonlocal_model())
-          nonlocal =
-            make_nonlocal<dim>(geometry, kernel, nonlocal_parameters, h);
-        if (geometry.has_local_model())
-          local = std::make_unique<PoissonProblem<dim>>(geometry,
-                                                        local_parameters,
-                                                        h);
-        timer.leave_subsection();
+        CouplingSolution                        solution;
 
-        if (nonlocal)
+        for (unsigned int cycle = 0;
+             cycle <= (geometry.has_local_model() ?
+                         local_parameters.adaptive_cycles :
+                         0);
+             ++cycle)
           {
-            timer.enter_subsection("assemble nonlocal");
-            nonlocal->assemble(*data.nonlocal_rhs,
-                               *data.volume_constraint_data);
-            timer.leave_subsection();
-          }
-        if (local)
-          {
-            timer.enter_subsection("assemble local");
-            local->assemble(*data.local_rhs,
-                            *data.boundary_data,
-                            *data.boundary_gradient);
-            timer.leave_subsection();
-          }
+            ConditionalOStream silent(out.get_stream(), false);
+            TimerOutput        timer(silent,
+                              TimerOutput::never,
+                              TimerOutput::wall_times);
+            LevelRecord        record;
+            record.h       = h;
+            record.horizon = eps;
+            record.cycle   = cycle;
 
-        CouplingSolution solution;
-        if (nonlocal && local)
-          {
-            timer.enter_subsection("assemble coupling");
-            const OverlapQuadrature<dim> overlap = create_overlap_quadrature(
-              geometry, eps, *nonlocal, local->get_dof_handler());
-            const CouplingSystem<dim> system(
-              nonlocal->get_model(),
-              local->get_model(),
-              overlap,
-              coupling_parameters.tikhonov_parameter);
-            timer.leave_subsection();
-
-            timer.enter_subsection("solve");
-            solution = coupling_parameters.solve(system);
-            timer.leave_subsection();
-            record.n_controls    = system.n_controls();
-            record.solver_method = coupling_parameters.method;
-            record.mismatch_J =
-              system.objective(solution.fields[0], solution.fields[1]);
-          }
-        else
-          {
-            // One model on the whole body: its own direct solve.
-            timer.enter_subsection("solve");
-            const unsigned int   k = nonlocal ? nonlocal_model : local_model;
-            const DiscreteModel &model =
-              nonlocal ? nonlocal->get_model() : local->get_model();
-            const ModelUnknowns unknowns(model);
-            solution.fields[k] =
-              ModelSolver(model, unknowns).forward(Vector<double>(0), true);
-            solution.iterations = 1;
-            timer.leave_subsection();
-            record.solver_method = "direct";
-          }
-        for (const auto &field : solution.fields)
-          for (const double value : field)
-            AssertThrow(std::isfinite(value),
-                        ExcMessage(
-                          "The solution is not finite: an expression of "
-                          "Problem data has values that are not (a division "
-                          "by zero, a logarithm of a negative number, ...)."));
-        solutions.push_back(solution);
-
-        timer.enter_subsection("postprocess");
-        record.n_nonlocal_dofs =
-          nonlocal ? nonlocal->get_model().roles.size() : 0;
-        record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
-        record.iterations   = solution.iterations;
-        record.residual     = solution.residual;
-        if (data.exact_solution)
-          {
-            // A missing model's errors are NaN, written as null.
-            const ErrorNorms none{std::numeric_limits<double>::quiet_NaN(),
-                                  std::numeric_limits<double>::quiet_NaN()};
-            const auto      &region = geometry.nonlocal_region;
-            const auto       tol    = geometry.tolerance();
-            record.has_errors       = true;
-            record.nonlocal_errors =
-              nonlocal ? nonlocal->errors(solution.fields[nonlocal_model],
-                                          *data.exact_solution) :
-                         none;
-            record.local_errors =
-              local ?
-                field_errors<dim>(local->get_dof_handler(),
-                                  solution.fields[local_model],
-                                  *data.exact_solution,
-                                  [](const Point<dim> &) { return true; }) :
-                none;
-            // The LtN solution: u_n on Omega_n, u_l on the rest.
-            record.coupled_errors =
-              nonlocal ? record.nonlocal_errors : ErrorNorms();
-            if (local)
-              record.coupled_errors.add(
-                field_errors<dim>(local->get_dof_handler(),
-                                  solution.fields[local_model],
-                                  *data.exact_solution,
-                                  [&](const Point<dim> &p) {
-                                    return !nonlocal ||
-                                           !region.contains(p, tol);
-                                  }));
-          }
-        timer.leave_subsection();
-
-        if (!output_directory.empty() && write_vtu)
-          {
-            timer.enter_subsection("output");
-            const std::string suffix =
-              "_level-" + Utilities::int_to_string(level, 2) + ".vtu";
-            if (nonlocal)
+            timer.enter_subsection("setup meshes");
+            if (cycle == 0)
               {
-                write_nonlocal_vtu(*nonlocal,
-                                   solution.fields[nonlocal_model],
-                                   data.exact_solution.get(),
-                                   output_directory + "/nonlocal_field" +
-                                     suffix);
-                nonlocal_files.emplace_back(level, "nonlocal_field" + suffix);
-                write_level_collection(output_directory + "/nonlocal_field.pvd",
-                                       nonlocal_files);
+                if (geometry.has_nonlocal_model())
+                  nonlocal = make_nonlocal<dim>(geometry,
+                                                kernel,
+                                                nonlocal_parameters,
+                                                h);
+                if (geometry.has_local_model())
+                  local =
+                    std::make_unique<PoissonProblem<dim>>(geometry,
+                                                          local_parameters,
+                                                          h);
+              }
+            else
+              // In 2D/3D the particles of the overlap observe the local field:
+              // its cells there keep at least p particle spacings (see the
+              // check of the spacing in the constructor).
+              local->refine(solution.fields[local_model],
+                            [&](const Point<dim> &center, const double size) {
+                              return dim == 1 || !nonlocal ||
+                                     !geometry.in_overlap(center, eps + size) ||
+                                     size / 2 >=
+                                       local_parameters.degree *
+                                         nonlocal_parameters.particle_spacing(
+                                           h) *
+                                         (1 - 1e-12);
+                            });
+            timer.leave_subsection();
+
+            if (nonlocal && cycle == 0)
+              {
+                timer.enter_subsection("assemble nonlocal");
+                nonlocal->assemble(*data.nonlocal_rhs,
+                                   *data.volume_constraint_data);
+                timer.leave_subsection();
               }
             if (local)
               {
-                std::vector<Region> local_regions;
-                for (const auto &p : local->get_support_points())
-                  local_regions.push_back(geometry.local_region_of(p, eps));
-                write_field_vtu<dim>(local->get_dof_handler(),
-                                     solution.fields[local_model],
-                                     data.exact_solution.get(),
-                                     local_regions,
-                                     output_directory + "/local_field" +
-                                       suffix);
-                local_files.emplace_back(level, "local_field" + suffix);
-                write_level_collection(output_directory + "/local_field.pvd",
-                                       local_files);
+                timer.enter_subsection("assemble local");
+                local->assemble(*data.local_rhs,
+                                *data.boundary_data,
+                                *data.boundary_gradient);
+                timer.leave_subsection();
+              }
+
+            solution = CouplingSolution();
+            if (nonlocal && local)
+              {
+                timer.enter_subsection("assemble coupling");
+                const OverlapQuadrature<dim> overlap =
+                  create_overlap_quadrature(geometry,
+                                            eps,
+                                            *nonlocal,
+                                            local->get_dof_handler());
+                const CouplingSystem<dim> system(
+                  nonlocal->get_model(),
+                  local->get_model(),
+                  overlap,
+                  coupling_parameters.tikhonov_parameter);
+                timer.leave_subsection();
+
+                timer.enter_subsection("solve");
+                solution = coupling_parameters.solve(system);
+                timer.leave_subsection();
+                record.n_controls    = system.n_controls();
+                record.solver_method = coupling_parameters.method;
+                record.mismatch_J =
+                  system.objective(solution.fields[0], solution.fields[1]);
+              }
+            else
+              {
+                // One model on the whole body: its own direct solve.
+                timer.enter_subsection("solve");
+                const unsigned int k = nonlocal ? nonlocal_model : local_model;
+                const DiscreteModel &model =
+                  nonlocal ? nonlocal->get_model() : local->get_model();
+                const ModelUnknowns unknowns(model);
+                solution.fields[k] =
+                  ModelSolver(model, unknowns).forward(Vector<double>(0), true);
+                solution.iterations = 1;
+                timer.leave_subsection();
+                record.solver_method = "direct";
+              }
+            for (const auto &field : solution.fields)
+              for (const double value : field)
+                AssertThrow(
+                  std::isfinite(value),
+                  ExcMessage(
+                    "The solution is not finite: an expression of "
+                    "Problem data has values that are not (a division "
+                    "by zero, a logarithm of a negative number, ...)."));
+            solutions.push_back(solution);
+
+            timer.enter_subsection("postprocess");
+            record.n_nonlocal_dofs =
+              nonlocal ? nonlocal->get_model().roles.size() : 0;
+            record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
+            record.iterations   = solution.iterations;
+            record.residual     = solution.residual;
+            if (data.exact_solution)
+              {
+                // A missing model's errors are NaN, written as null.
+                const ErrorNorms none{std::numeric_limits<double>::quiet_NaN(),
+                                      std::numeric_limits<double>::quiet_NaN()};
+                const auto      &region = geometry.nonlocal_region;
+                const auto       tol    = geometry.tolerance();
+                record.has_errors       = true;
+                record.nonlocal_errors =
+                  nonlocal ? nonlocal->errors(solution.fields[nonlocal_model],
+                                              *data.exact_solution) :
+                             none;
+                record.local_errors =
+                  local ?
+                    field_errors<dim>(local->get_dof_handler(),
+                                      solution.fields[local_model],
+                                      *data.exact_solution,
+                                      [](const Point<dim> &) { return true; }) :
+                    none;
+                // The LtN solution: u_n on Omega_n, u_l on the rest.
+                record.coupled_errors =
+                  nonlocal ? record.nonlocal_errors : ErrorNorms();
+                if (local)
+                  record.coupled_errors.add(
+                    field_errors<dim>(local->get_dof_handler(),
+                                      solution.fields[local_model],
+                                      *data.exact_solution,
+                                      [&](const Point<dim> &p) {
+                                        return !nonlocal ||
+                                               !region.contains(p, tol);
+                                      }));
               }
             timer.leave_subsection();
-          }
 
-        const auto times = timer.get_summary_data(TimerOutput::total_wall_time);
-        for (const std::string phase : {"setup meshes",
-                                        "assemble nonlocal",
-                                        "assemble local",
-                                        "assemble coupling",
-                                        "solve",
-                                        "postprocess",
-                                        "output"})
-          {
-            const auto entry = times.find(phase);
-            record.timings.emplace_back(phase,
-                                        entry == times.end() ? 0. :
-                                                               entry->second);
-          }
+            if (!output_directory.empty() && write_vtu)
+              {
+                timer.enter_subsection("output");
+                // One file per solve: level, or level and adaptive cycle.
+                const unsigned int step = summary.levels.size();
+                const std::string  suffix =
+                  "_level-" + Utilities::int_to_string(step, 2) + ".vtu";
+                if (nonlocal)
+                  {
+                    write_nonlocal_vtu(*nonlocal,
+                                       solution.fields[nonlocal_model],
+                                       data.exact_solution.get(),
+                                       output_directory + "/nonlocal_field" +
+                                         suffix);
+                    nonlocal_files.emplace_back(step,
+                                                "nonlocal_field" + suffix);
+                    write_level_collection(output_directory +
+                                             "/nonlocal_field.pvd",
+                                           nonlocal_files);
+                  }
+                if (local)
+                  {
+                    std::vector<Region> local_regions;
+                    for (const auto &p : local->get_support_points())
+                      local_regions.push_back(geometry.local_region_of(p, eps));
+                    write_field_vtu<dim>(local->get_dof_handler(),
+                                         solution.fields[local_model],
+                                         data.exact_solution.get(),
+                                         local_regions,
+                                         output_directory + "/local_field" +
+                                           suffix);
+                    local_files.emplace_back(step, "local_field" + suffix);
+                    write_level_collection(output_directory +
+                                             "/local_field.pvd",
+                                           local_files);
+                  }
+                timer.leave_subsection();
+              }
 
-        out << "level " << level << ": h = " << h << ", eps = " << eps
-            << ", nonlocal dofs = " << record.n_nonlocal_dofs
-            << ", local dofs = " << record.n_local_dofs
-            << ", controls = " << record.n_controls
-            << ", iterations = " << record.iterations
-            << ", J = " << std::scientific << std::setprecision(3)
-            << record.mismatch_J << std::defaultfloat << std::endl;
-        summary.levels.push_back(record);
+            const auto times =
+              timer.get_summary_data(TimerOutput::total_wall_time);
+            for (const std::string phase : {"setup meshes",
+                                            "assemble nonlocal",
+                                            "assemble local",
+                                            "assemble coupling",
+                                            "solve",
+                                            "postprocess",
+                                            "output"})
+              {
+                const auto entry = times.find(phase);
+                record.timings.emplace_back(
+                  phase, entry == times.end() ? 0. : entry->second);
+              }
+
+            out << "level " << level
+                << (cycle > 0 ? ", cycle " + std::to_string(cycle) :
+                                std::string())
+                << ": h = " << h << ", eps = " << eps
+                << ", nonlocal dofs = " << record.n_nonlocal_dofs
+                << ", local dofs = " << record.n_local_dofs
+                << ", controls = " << record.n_controls
+                << ", iterations = " << record.iterations
+                << ", J = " << std::scientific << std::setprecision(3)
+                << record.mismatch_J << std::defaultfloat << std::endl;
+            summary.levels.push_back(record);
+          }
       }
     summary.total_time = total_timer.wall_time();
     return summary;

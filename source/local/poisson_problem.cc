@@ -6,9 +6,12 @@
 #include <deal.II/fe/mapping_q1.h>
 
 #include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_refinement.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
 
+#include <deal.II/numerics/error_estimator.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ltn/base/input_error.h>
@@ -41,6 +44,19 @@ namespace ltn
                         "local region on the body's boundary get the Neumann "
                         "condition du/dn = `Problem data/Boundary gradient` "
                         ". n.");
+      prm.declare_entry("Adaptive refinement cycles",
+                        "0",
+                        Patterns::Integer(0, 20),
+                        "On every level, after the first coupled solve, "
+                        "refine the local mesh this many times by Kelly's "
+                        "error indicator, solving again each time (one line "
+                        "each in the convergence table; particles and "
+                        "horizon stay those of the level).");
+      prm.declare_entry("Refinement fraction",
+                        "0.3",
+                        Patterns::Double(0, 1),
+                        "The fraction of cells, with the largest indicators, "
+                        "that an adaptive cycle refines.");
     }
     prm.leave_subsection();
   }
@@ -59,6 +75,8 @@ namespace ltn
            Utilities::split_string_list(prm.get("Dirichlet boundaries")))
         dirichlet_faces.insert(
           Geometry<dim>::face_number(name, "Local model/Dirichlet boundaries"));
+      adaptive_cycles     = prm.get_integer("Adaptive refinement cycles");
+      refinement_fraction = prm.get_double("Refinement fraction");
     }
     prm.leave_subsection();
   }
@@ -111,12 +129,44 @@ namespace ltn
               }
             cell->face(f)->set_boundary_id(id);
           }
+    setup_dofs();
+  }
 
+
+
+  template <int dim>
+  void
+  PoissonProblem<dim>::setup_dofs()
+  {
     dof_handler.distribute_dofs(fe);
     support_points.resize(dof_handler.n_dofs());
     DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
                                          dof_handler,
                                          support_points);
+    hanging_nodes.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler, hanging_nodes);
+    hanging_nodes.close();
+  }
+
+
+
+  template <int dim>
+  void
+  PoissonProblem<dim>::refine(
+    const Vector<double>                                  &solution,
+    const std::function<bool(const Point<dim> &, double)> &may_refine)
+  {
+    Vector<float> indicators(triangulation.n_active_cells());
+    KellyErrorEstimator<dim>::estimate(
+      dof_handler, QGauss<dim - 1>(fe.degree + 1), {}, solution, indicators);
+    GridRefinement::refine_and_coarsen_fixed_number(
+      triangulation, indicators, parameters.refinement_fraction, 0);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->refine_flag_set() &&
+          !may_refine(cell->center(), cell->extent_in_direction(0)))
+        cell->clear_refine_flag();
+    triangulation.execute_coarsening_and_refinement();
+    setup_dofs();
   }
 
 
@@ -129,7 +179,10 @@ namespace ltn
   {
     const types::global_dof_index n_dofs = dof_handler.n_dofs();
     DynamicSparsityPattern        dsp(n_dofs);
-    DoFTools::make_sparsity_pattern(dof_handler, dsp);
+    DoFTools::make_sparsity_pattern(dof_handler, dsp, hanging_nodes, true);
+    for (const auto &line : hanging_nodes.get_lines())
+      for (const auto &entry : line.entries)
+        dsp.add(line.index, entry.first);
     model.sparsity.copy_from(dsp);
     model.matrix.reinit(model.sparsity);
     model.rhs.reinit(n_dofs);
@@ -148,23 +201,25 @@ namespace ltn
     const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(dofs_per_cell);
     Vector<double>                       gradient(dim);
+    FullMatrix<double>                   cell_matrix(dofs_per_cell);
+    Vector<double>                       cell_rhs(dofs_per_cell);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         fe_values.reinit(cell);
         cell->get_dof_indices(dofs);
+        cell_matrix = 0;
+        cell_rhs    = 0;
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           {
             const double f = rhs.value(fe_values.quadrature_point(q));
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               {
                 for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                  model.matrix.add(dofs[i],
-                                   dofs[j],
-                                   fe_values.shape_grad(i, q) *
-                                     fe_values.shape_grad(j, q) *
-                                     fe_values.JxW(q));
-                model.rhs[dofs[i]] +=
+                  cell_matrix(i, j) += fe_values.shape_grad(i, q) *
+                                       fe_values.shape_grad(j, q) *
+                                       fe_values.JxW(q);
+                cell_rhs(i) +=
                   f * fe_values.shape_value(i, q) * fe_values.JxW(q);
               }
           }
@@ -184,11 +239,26 @@ namespace ltn
                   for (unsigned int d = 0; d < dim; ++d)
                     flux += gradient[d] * fe_face_values.normal_vector(q)[d];
                   for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                    model.rhs[dofs[i]] += flux *
-                                          fe_face_values.shape_value(i, q) *
-                                          fe_face_values.JxW(q);
+                    cell_rhs(i) += flux * fe_face_values.shape_value(i, q) *
+                                   fe_face_values.JxW(q);
                 }
             }
+        // Condensed: the equations of hanging nodes go to their masters.
+        hanging_nodes.distribute_local_to_global(
+          cell_matrix, cell_rhs, dofs, model.matrix, model.rhs);
+      }
+
+    // A hanging node's own equation is its constraint.
+    for (const auto &line : hanging_nodes.get_lines())
+      {
+        for (auto entry = model.matrix.begin(line.index);
+             entry != model.matrix.end(line.index);
+             ++entry)
+          entry->value() = 0;
+        model.matrix.set(line.index, line.index, 1.);
+        for (const auto &entry : line.entries)
+          model.matrix.add(line.index, entry.first, -entry.second);
+        model.rhs[line.index] = 0;
       }
 
     // Roles: Dirichlet data wins over the control where Gamma_c meets a
@@ -200,6 +270,9 @@ namespace ltn
                                       {control_boundary_id});
     for (const auto i : control_dofs)
       model.roles[i] = DofRole::control;
+    // A hanging node on Gamma_c follows its masters: not a control of its own.
+    for (const auto &line : hanging_nodes.get_lines())
+      model.roles[line.index] = DofRole::free;
 
     model.fixed_values.reinit(n_dofs);
     std::map<types::global_dof_index, double> dirichlet_values;

@@ -11,7 +11,8 @@ namespace ltn
                 const double h_coarse,
                 const double h_fine)
   {
-    if (e_coarse <= 0 || e_fine <= 0)
+    // No rate between adaptive cycles of one level (same h).
+    if (e_coarse <= 0 || e_fine <= 0 || h_coarse == h_fine)
       return std::numeric_limits<double>::quiet_NaN();
     return std::log(e_coarse / e_fine) / std::log(h_coarse / h_fine);
   }
@@ -89,6 +90,7 @@ namespace ltn
           {
             JsonValue entry = JsonValue::object();
             entry["level"]  = static_cast<unsigned int>(l);
+            entry["cycle"]  = levels[l].cycle;
             entry["h"]      = levels[l].h;
             add_level_fields(entry, levels[l]);
             JsonValue level_timings = JsonValue::object();

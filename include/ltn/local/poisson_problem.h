@@ -9,9 +9,12 @@
 
 #include <deal.II/grid/tria.h>
 
+#include <deal.II/lac/affine_constraints.h>
+
 #include <ltn/base/discrete_model.h>
 #include <ltn/scene/geometry.h>
 
+#include <functional>
 #include <set>
 #include <vector>
 
@@ -27,6 +30,12 @@ namespace ltn
    * `du/dn = q . n` (a given flux vector `q`) on the others. The boundary
    * `Gamma_c` of `Omega_l` inside the nonlocal region carries the virtual
    * control `theta_l`.
+   *
+   * The mesh can be refined adaptively (Kelly). A hanging node stays an
+   * unknown of the model, with its constraint as its equation,
+   * `u_j - sum_k c_jk u_k = 0`, while the equations of the other degrees of
+   * freedom are condensed; so the solution is conforming and the coupling
+   * evaluates it with the ordinary shape functions.
    */
   template <int dim>
   class PoissonProblem
@@ -45,6 +54,8 @@ namespace ltn
 
       unsigned int           degree = 1;
       std::set<unsigned int> dirichlet_faces;
+      unsigned int           adaptive_cycles     = 0;
+      double                 refinement_fraction = 0.3;
     };
 
     PoissonProblem(const Geometry<dim> &geometry,
@@ -62,6 +73,16 @@ namespace ltn
              const Function<dim> &boundary_data,
              const Function<dim> &boundary_gradient);
 
+    /**
+     * Refine the cells with the largest Kelly error indicators of
+     * @p solution (a `refinement fraction` of them), except those for which
+     * @p may_refine (given the cell's centre and size) says no, and set up
+     * the degrees of freedom anew; assemble() must follow.
+     */
+    void
+    refine(const Vector<double>                                  &solution,
+           const std::function<bool(const Point<dim> &, double)> &may_refine);
+
     const DoFHandler<dim> &
     get_dof_handler() const;
 
@@ -73,12 +94,17 @@ namespace ltn
     get_support_points() const;
 
   private:
-    const Geometry<dim>    &geometry;
-    const Parameters       &parameters;
-    Triangulation<dim>      triangulation;
-    FE_Q<dim>               fe;
-    DoFHandler<dim>         dof_handler;
-    std::vector<Point<dim>> support_points;
-    DiscreteModel           model;
+    /** Distribute degrees of freedom, support points, hanging nodes. */
+    void
+    setup_dofs();
+
+    const Geometry<dim>      &geometry;
+    const Parameters         &parameters;
+    Triangulation<dim>        triangulation;
+    FE_Q<dim>                 fe;
+    DoFHandler<dim>           dof_handler;
+    std::vector<Point<dim>>   support_points;
+    AffineConstraints<double> hanging_nodes;
+    DiscreteModel             model;
   };
 } // namespace ltn

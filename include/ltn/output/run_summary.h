@@ -16,7 +16,9 @@ namespace ltn
   /** What one refinement level of a run measured. */
   struct LevelRecord
   {
-    double                  h               = 0;
+    double h = 0;
+    /** Adaptive refinement cycle of the local mesh within the level. */
+    unsigned int            cycle           = 0;
     double                  horizon         = 0;
     types::global_dof_index n_nonlocal_dofs = 0;
     types::global_dof_index n_local_dofs    = 0;
