@@ -32,9 +32,9 @@ png = sys.argv[3] if len(sys.argv) > 3 else os.path.join(
     directory, f"fields_level-{level:02d}.png")
 
 xn, n = read_sorted(
-    os.path.join(directory, f"nonlocal_field_level-{level:02d}.vtu"))
+    os.path.join(directory, f"nonlocal_field_level-{level:02d}.pvtu"))
 xl, l = read_sorted(
-    os.path.join(directory, f"local_field_level-{level:02d}.vtu"))
+    os.path.join(directory, f"local_field_level-{level:02d}.pvtu"))
 
 figure, (top, middle, bottom) = plt.subplots(
     3, 1, sharex=True, figsize=(8, 7), height_ratios=[3, 2, 1])

@@ -24,9 +24,9 @@ level = int(sys.argv[2]) if len(sys.argv) > 2 else 0
 png = sys.argv[3] if len(sys.argv) > 3 else os.path.join(
     directory, f"fields_level-{level:02d}.png")
 xn, n = read_vtu(
-    os.path.join(directory, f"nonlocal_field_level-{level:02d}.vtu"))
+    os.path.join(directory, f"nonlocal_field_level-{level:02d}.pvtu"))
 xl, l = read_vtu(
-    os.path.join(directory, f"local_field_level-{level:02d}.vtu"))
+    os.path.join(directory, f"local_field_level-{level:02d}.pvtu"))
 
 keys = [k for k in ("u", "error") if k in n]
 figure, axes = plt.subplots(1, len(keys) + 1, figsize=(5 * (len(keys) + 1), 4.2))

@@ -1,11 +1,12 @@
-"""Read the point fields of an LtN VTU file (a mesh or particles)."""
+"""Read the point fields of an LtN VTU or PVTU file (a mesh or particles)."""
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 
 def read_vtu(path):
-    """Return (points, {field name: values}) of the VTU file at path."""
-    reader = vtk.vtkXMLUnstructuredGridReader()
+    """Return (points, {field name: values}) of the VTU/PVTU file at path."""
+    reader = (vtk.vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu")
+              else vtk.vtkXMLUnstructuredGridReader())
     reader.SetFileName(path)
     reader.Update()
     grid = reader.GetOutput()

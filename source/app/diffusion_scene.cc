@@ -30,7 +30,8 @@ namespace ltn
     make_nonlocal(const Geometry<dim>      &geometry,
                   const Kernel             &kernel,
                   const NonlocalParameters &parameters,
-                  const double              h)
+                  const double              h,
+                  const MPI_Comm            communicator)
     {
       if constexpr (dim == 1)
         return std::make_unique<NonlocalWeakForm1D>(geometry,
@@ -39,7 +40,7 @@ namespace ltn
                                                     h);
       else
         return std::make_unique<ParticleDiffusion<dim>>(
-          geometry, kernel, parameters.particle_spacing(h));
+          geometry, kernel, parameters.particle_spacing(h), communicator);
     }
   } // namespace
 
@@ -178,6 +179,9 @@ namespace ltn
   {
     Timer total_timer;
     solutions.clear();
+    // 2D and 3D models are distributed over all ranks; the 1D ones are
+    // serial (p4est has no 1D meshes), every rank solving all of it.
+    const MPI_Comm communicator = (dim == 1) ? MPI_COMM_SELF : MPI_COMM_WORLD;
 
     RunSummary summary;
     summary.scene = scene_name;
@@ -218,15 +222,11 @@ namespace ltn
             if (cycle == 0)
               {
                 if (geometry.has_nonlocal_model())
-                  nonlocal = make_nonlocal<dim>(geometry,
-                                                kernel,
-                                                nonlocal_parameters,
-                                                h);
+                  nonlocal = make_nonlocal<dim>(
+                    geometry, kernel, nonlocal_parameters, h, communicator);
                 if (geometry.has_local_model())
-                  local =
-                    std::make_unique<PoissonProblem<dim>>(geometry,
-                                                          local_parameters,
-                                                          h);
+                  local = std::make_unique<PoissonProblem<dim>>(
+                    geometry, local_parameters, h, communicator);
               }
             else
               // In 2D/3D the particles of the overlap observe the local field:
@@ -291,26 +291,28 @@ namespace ltn
                 const unsigned int k = nonlocal ? nonlocal_model : local_model;
                 const DiscreteModel &model =
                   nonlocal ? nonlocal->get_model() : local->get_model();
-                const ModelUnknowns unknowns(model);
+                const ModelSolver solver(model, false);
                 solution.fields[k] =
-                  ModelSolver(model, unknowns).forward(Vector<double>(0), true);
+                  solver.forward(solver.new_control_vector(), true);
                 solution.iterations = 1;
                 timer.leave_subsection();
                 record.solver_method = "direct";
               }
+            bool finite = true;
             for (const auto &field : solution.fields)
               for (const double value : field)
-                AssertThrow(
-                  std::isfinite(value),
-                  ExcMessage(
-                    "The solution is not finite: an expression of "
-                    "Problem data has values that are not (a division "
-                    "by zero, a logarithm of a negative number, ...)."));
+                finite = finite && std::isfinite(value);
+            AssertThrow(Utilities::MPI::min(finite ? 1 : 0, MPI_COMM_WORLD) ==
+                          1,
+                        ExcMessage(
+                          "The solution is not finite: an expression of "
+                          "Problem data has values that are not (a division "
+                          "by zero, a logarithm of a negative number, ...)."));
             solutions.push_back(solution);
 
             timer.enter_subsection("postprocess");
             record.n_nonlocal_dofs =
-              nonlocal ? nonlocal->get_model().roles.size() : 0;
+              nonlocal ? nonlocal->get_model().owned.size() : 0;
             record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
             record.iterations   = solution.iterations;
             record.residual     = solution.residual;
@@ -321,7 +323,11 @@ namespace ltn
                                       std::numeric_limits<double>::quiet_NaN()};
                 const auto      &region = geometry.nonlocal_region;
                 const auto       tol    = geometry.tolerance();
-                record.has_errors       = true;
+                const auto       local_field =
+                  local ?
+                          local->get_model().ghosted(solution.fields[local_model]) :
+                          TrilinosWrappers::MPI::Vector();
+                record.has_errors = true;
                 record.nonlocal_errors =
                   nonlocal ? nonlocal->errors(solution.fields[nonlocal_model],
                                               *data.exact_solution) :
@@ -329,7 +335,7 @@ namespace ltn
                 record.local_errors =
                   local ?
                     field_errors<dim>(local->get_dof_handler(),
-                                      solution.fields[local_model],
+                                      local_field,
                                       *data.exact_solution,
                                       [](const Point<dim> &) { return true; }) :
                     none;
@@ -339,7 +345,7 @@ namespace ltn
                 if (local)
                   record.coupled_errors.add(
                     field_errors<dim>(local->get_dof_handler(),
-                                      solution.fields[local_model],
+                                      local_field,
                                       *data.exact_solution,
                                       [&](const Point<dim> &p) {
                                         return !nonlocal ||
@@ -354,32 +360,34 @@ namespace ltn
                 // One file per solve: level, or level and adaptive cycle.
                 const unsigned int step = summary.levels.size();
                 const std::string  suffix =
-                  "_level-" + Utilities::int_to_string(step, 2) + ".vtu";
+                  "_level-" + Utilities::int_to_string(step, 2);
                 if (nonlocal)
                   {
-                    write_nonlocal_vtu(*nonlocal,
-                                       solution.fields[nonlocal_model],
-                                       data.exact_solution.get(),
-                                       output_directory + "/nonlocal_field" +
-                                         suffix);
-                    nonlocal_files.emplace_back(step,
-                                                "nonlocal_field" + suffix);
+                    nonlocal_files.emplace_back(
+                      step,
+                      write_nonlocal_vtu(*nonlocal,
+                                         solution.fields[nonlocal_model],
+                                         data.exact_solution.get(),
+                                         output_directory,
+                                         "nonlocal_field" + suffix));
                     write_level_collection(output_directory +
                                              "/nonlocal_field.pvd",
                                            nonlocal_files);
                   }
                 if (local)
                   {
-                    std::vector<Region> local_regions;
-                    for (const auto &p : local->get_support_points())
-                      local_regions.push_back(geometry.local_region_of(p, eps));
-                    write_field_vtu<dim>(local->get_dof_handler(),
-                                         solution.fields[local_model],
-                                         data.exact_solution.get(),
-                                         local_regions,
-                                         output_directory + "/local_field" +
-                                           suffix);
-                    local_files.emplace_back(step, "local_field" + suffix);
+                    local_files.emplace_back(
+                      step,
+                      write_field_vtu<dim>(
+                        local->get_dof_handler(),
+                        local->get_model().ghosted(
+                          solution.fields[local_model]),
+                        data.exact_solution.get(),
+                        [&](const Point<dim> &p) {
+                          return geometry.local_region_of(p, eps);
+                        },
+                        output_directory,
+                        "local_field" + suffix));
                     write_level_collection(output_directory +
                                              "/local_field.pvd",
                                            local_files);

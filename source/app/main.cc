@@ -91,23 +91,25 @@ namespace
       output_directory = scene.get_output_directory();
     if (output_directory.empty())
       output_directory = "output/" + scene_name;
+    bool writable = true;
     if (root)
       {
         std::error_code error;
         std::filesystem::create_directories(output_directory, error);
         std::ofstream used(output_directory + "/used_parameters.prm");
-        ltn::check_input(!error && used.good(),
-                         "--output-dir (or Output/Directory)",
-                         output_directory,
-                         "a directory that can be created and written to");
-        prm.print_parameters(used, ParameterHandler::PRM);
+        writable = !error && used.good();
+        if (writable)
+          prm.print_parameters(used, ParameterHandler::PRM);
       }
-    MPI_Barrier(MPI_COMM_WORLD);
+    // Every rank learns whether the directory is usable, and fails alike.
+    ltn::check_input(Utilities::MPI::min(writable ? 1 : 0, MPI_COMM_WORLD) == 1,
+                     "--output-dir (or Output/Directory)",
+                     output_directory,
+                     "a directory that can be created and written to");
 
     pcout << "LtN scene '" << scene_name << "' (" << dim << "D)" << std::endl;
-    ltn::RunSummary summary =
-      scene.run(root ? output_directory : std::string(), pcout);
-    summary.memory_mb = ltn::peak_memory_mb(MPI_COMM_WORLD);
+    ltn::RunSummary summary = scene.run(output_directory, pcout);
+    summary.memory_mb       = ltn::peak_memory_mb(MPI_COMM_WORLD);
 
     if (root)
       {

@@ -5,6 +5,7 @@
 #include <ltn/base/field_errors.h>
 
 #include <cmath>
+#include <limits>
 
 namespace ltn
 {
@@ -35,10 +36,25 @@ namespace ltn
 
 
 
+  ErrorNorms
+  ErrorNorms::over_all_ranks(const MPI_Comm communicator) const
+  {
+    ErrorNorms result;
+    result.l2_squared = Utilities::MPI::sum(l2_squared, communicator);
+    // MPI's max would not keep a NaN: count them.
+    const bool any_nan =
+      Utilities::MPI::sum(std::isnan(linf) ? 1 : 0, communicator) > 0;
+    result.linf = any_nan ? std::numeric_limits<double>::quiet_NaN() :
+                            Utilities::MPI::max(linf, communicator);
+    return result;
+  }
+
+
+
   template <int dim>
   ErrorNorms
   field_errors(const DoFHandler<dim>                         &dof_handler,
-               const Vector<double>                          &field,
+               const TrilinosWrappers::MPI::Vector           &field,
                const Function<dim>                           &exact,
                const std::function<bool(const Point<dim> &)> &in_region)
   {
@@ -57,7 +73,7 @@ namespace ltn
 
     ErrorNorms errors;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (in_region(cell->center()))
+      if (cell->is_locally_owned() && in_region(cell->center()))
         {
           l2_values.reinit(cell);
           l2_values.get_function_values(field, values_at_l2);
@@ -73,22 +89,22 @@ namespace ltn
             errors.add_pointwise(values_at_max[q] -
                                  exact.value(max_values.quadrature_point(q)));
         }
-    return errors;
+    return errors.over_all_ranks(dof_handler.get_communicator());
   }
 
   template ErrorNorms
   field_errors(const DoFHandler<1> &,
-               const Vector<double> &,
+               const TrilinosWrappers::MPI::Vector &,
                const Function<1> &,
                const std::function<bool(const Point<1> &)> &);
   template ErrorNorms
   field_errors(const DoFHandler<2> &,
-               const Vector<double> &,
+               const TrilinosWrappers::MPI::Vector &,
                const Function<2> &,
                const std::function<bool(const Point<2> &)> &);
   template ErrorNorms
   field_errors(const DoFHandler<3> &,
-               const Vector<double> &,
+               const TrilinosWrappers::MPI::Vector &,
                const Function<3> &,
                const std::function<bool(const Point<3> &)> &);
 } // namespace ltn

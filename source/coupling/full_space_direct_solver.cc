@@ -1,142 +1,148 @@
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <ltn/coupling/direct_solver.h>
 #include <ltn/coupling/full_space_direct_solver.h>
 
 namespace ltn
 {
+  namespace
+  {
+    /**
+     * Visit every entry `(row, column, value)` of the optimality matrix that
+     * this rank contributes (some in rows other ranks own), and every entry
+     * `(row, value)` of its right-hand side, in the numbering
+     * `[u_n | u_l | mu_n | mu_l]`.
+     */
+    template <int dim, typename MatrixEntry, typename RhsEntry>
+    void
+    for_each_entry(const CouplingSystem<dim>                    &system,
+                   const std::array<types::global_dof_index, 2> &x_offset,
+                   const std::array<types::global_dof_index, 2> &mu_offset,
+                   const MatrixEntry                            &matrix_entry,
+                   const RhsEntry                               &rhs_entry)
+    {
+      using index         = types::global_dof_index;
+      const auto &overlap = system.overlap;
+
+      // B^T W B, one overlap point at a time.
+      std::vector<std::pair<index, double>> b_row;
+      for (std::size_t q = 0; q < overlap.weights.size(); ++q)
+        {
+          b_row.clear();
+          for (const auto &[i, e] : overlap.nonlocal_rows[q])
+            b_row.emplace_back(x_offset[nonlocal_model] + i, e);
+          for (const auto &[j, p] : overlap.local_rows[q])
+            b_row.emplace_back(x_offset[local_model] + j, -p);
+          for (const auto &a : b_row)
+            for (const auto &c : b_row)
+              matrix_entry(a.first,
+                           c.first,
+                           overlap.weights[q] * a.second * c.second);
+        }
+
+      for (const unsigned int k : {0u, 1u})
+        {
+          const DiscreteModel &model = *system.models[k];
+          for (const index i : model.controls)
+            {
+              matrix_entry(x_offset[k] + i, x_offset[k] + i, system.alpha);
+              matrix_entry(mu_offset[k] + i, mu_offset[k] + i, 1.);
+            }
+          for (const index i : model.owned)
+            if (!model.controls.is_element(i))
+              {
+                for (auto entry = model.matrix.begin(i);
+                     entry != model.matrix.end(i);
+                     ++entry)
+                  {
+                    matrix_entry(mu_offset[k] + i,
+                                 x_offset[k] + entry->column(),
+                                 entry->value());
+                    matrix_entry(x_offset[k] + entry->column(),
+                                 mu_offset[k] + i,
+                                 entry->value());
+                  }
+                rhs_entry(mu_offset[k] + i, model.rhs(i));
+              }
+        }
+    }
+  } // namespace
+
+
+
   template <int dim>
   CouplingSolution
   solve_full_space_direct(const CouplingSystem<dim> &system)
   {
-    using index          = types::global_dof_index;
-    const auto &unknowns = system.unknowns;
-    const auto &overlap  = system.overlap;
+    using index                    = types::global_dof_index;
+    const DiscreteModel       &n_m = *system.models[nonlocal_model];
+    const DiscreteModel       &l_m = *system.models[local_model];
+    const index                N_n = n_m.owned.size(), N_l = l_m.owned.size();
+    const std::array<index, 2> x_offset  = {{0, N_n}};
+    const std::array<index, 2> mu_offset = {{N_n + N_l, 2 * N_n + N_l}};
+    const index                n         = 2 * (N_n + N_l);
+    const MPI_Comm             comm      = system.communicator();
 
-    // Block offsets: [x_n | x_l | lambda_n | lambda_l].
-    const index n_x      = unknowns[0].n_unknowns() + unknowns[1].n_unknowns();
-    const index n_free_n = unknowns[0].free.size();
-    const std::array<index, 2> x_offset      = {{0, unknowns[0].n_unknowns()}};
-    const std::array<index, 2> lambda_offset = {{n_x, n_x + n_free_n}};
-    const index                n = lambda_offset[1] + unknowns[1].free.size();
-
-    // Row q of B = [E, -P] in the unknowns' numbering, and the part r_0 of
-    // the mismatch that comes from fixed data.
-    std::vector<std::pair<index, double>> b_row;
-    const auto make_b_row = [&](const std::size_t q) {
-      b_row.clear();
-      double r0 = 0;
-      for (const unsigned int k : {0u, 1u})
-        {
-          const double sign = (k == nonlocal_model) ? 1. : -1.;
-          const auto  &rows =
-            (k == nonlocal_model) ? overlap.nonlocal_rows : overlap.local_rows;
-          for (const auto &[dof, value] : rows[q])
-            {
-              const index position = unknowns[k].position[dof];
-              if (position == ModelUnknowns::none)
-                r0 += sign * value * system.models[k]->fixed_values[dof];
-              else
-                b_row.emplace_back(x_offset[k] + position, sign * value);
-            }
-        }
-      return r0;
-    };
-
-    DynamicSparsityPattern dsp(n);
-    for (std::size_t q = 0; q < overlap.weights.size(); ++q)
-      {
-        make_b_row(q);
-        for (const auto &a : b_row)
-          for (const auto &b : b_row)
-            dsp.add(a.first, b.first);
-      }
+    IndexSet owned(n), writable(n);
     for (const unsigned int k : {0u, 1u})
       {
-        for (index c = 0; c < unknowns[k].control.size(); ++c)
-          {
-            const index i = x_offset[k] + unknowns[k].free.size() + c;
-            dsp.add(i, i);
-          }
-        const SparseMatrix<double> &A = system.models[k]->matrix;
-        for (index r = 0; r < unknowns[k].free.size(); ++r)
-          for (auto entry = A.begin(unknowns[k].free[r]);
-               entry != A.end(unknowns[k].free[r]);
-               ++entry)
-            {
-              const index position = unknowns[k].position[entry->column()];
-              if (position != ModelUnknowns::none)
-                {
-                  dsp.add(lambda_offset[k] + r, x_offset[k] + position);
-                  dsp.add(x_offset[k] + position, lambda_offset[k] + r);
-                }
-            }
-      }
-    SparsityPattern sparsity;
-    sparsity.copy_from(dsp);
-    SparseMatrix<double> K(sparsity);
-    Vector<double>       b(n);
-
-    for (std::size_t q = 0; q < overlap.weights.size(); ++q)
-      {
-        const double r0 = make_b_row(q);
-        const double w  = overlap.weights[q];
-        for (const auto &a : b_row)
-          {
-            for (const auto &c : b_row)
-              K.add(a.first, c.first, w * a.second * c.second);
-            b[a.first] -= w * a.second * r0;
-          }
-      }
-    for (const unsigned int k : {0u, 1u})
-      {
-        for (index c = 0; c < unknowns[k].control.size(); ++c)
-          {
-            const index i = x_offset[k] + unknowns[k].free.size() + c;
-            K.add(i, i, system.alpha);
-          }
         const DiscreteModel &model = *system.models[k];
-        for (index r = 0; r < unknowns[k].free.size(); ++r)
-          {
-            const index row = unknowns[k].free[r];
-            double      f   = model.rhs[row];
-            for (auto entry = model.matrix.begin(row);
-                 entry != model.matrix.end(row);
-                 ++entry)
-              {
-                const index position = unknowns[k].position[entry->column()];
-                if (position == ModelUnknowns::none)
-                  f -= entry->value() * model.fixed_values[entry->column()];
-                else
-                  {
-                    K.add(lambda_offset[k] + r,
-                          x_offset[k] + position,
-                          entry->value());
-                    K.add(x_offset[k] + position,
-                          lambda_offset[k] + r,
-                          entry->value());
-                  }
-              }
-            b[lambda_offset[k] + r] = f;
-          }
+        owned.add_indices(model.owned, x_offset[k]);
+        owned.add_indices(model.owned, mu_offset[k]);
+        writable.add_indices(model.owned, mu_offset[k]);
+        writable.add_indices(system.overlap_columns[k], x_offset[k]);
+        // The rows of C^T are the columns of the owned rows of M: with
+        // condensed hanging nodes these can reach beyond the ghost layer.
+        std::vector<index> columns;
+        for (const index i : model.owned)
+          for (auto entry = model.matrix.begin(i); entry != model.matrix.end(i);
+               ++entry)
+            columns.push_back(x_offset[k] + entry->column());
+        std::sort(columns.begin(), columns.end());
+        columns.erase(std::unique(columns.begin(), columns.end()),
+                      columns.end());
+        writable.add_indices(columns.begin(), columns.end());
       }
 
-    SparseDirectUMFPACK direct;
-    direct.initialize(K);
-    Vector<double> z(n);
-    direct.vmult(z, b);
+    TrilinosWrappers::SparsityPattern sparsity(owned, owned, writable, comm);
+    for_each_entry(
+      system,
+      x_offset,
+      mu_offset,
+      [&](const index row, const index column, double) {
+        sparsity.add(row, column);
+      },
+      [](index, double) {});
+    sparsity.compress();
+
+    TrilinosWrappers::SparseMatrix K(sparsity);
+    TrilinosWrappers::MPI::Vector  b(owned, comm);
+    for_each_entry(
+      system,
+      x_offset,
+      mu_offset,
+      [&](const index row, const index column, const double value) {
+        K.add(row, column, value);
+      },
+      [&](const index row, const double value) { b(row) = value; });
+    K.compress(VectorOperation::add);
+    b.compress(VectorOperation::insert);
+
+    const DirectSolver            direct(K, false);
+    TrilinosWrappers::MPI::Vector z(owned, comm);
+    direct.solve(z, b);
 
     // Wide nonlocal stencils make K ill-conditioned enough that one
     // factorization can lose digits (relative residuals of 1e-5 were seen
     // for P2/P2 at eps/h = 64): refine iteratively with the same factors.
-    const double   b_norm = std::max(b.l2_norm(), 1e-300);
-    Vector<double> residual(n), correction(n);
-    double         relative_residual = K.residual(residual, z, b) / b_norm;
-    unsigned int   refinements       = 0;
+    const double                  b_norm = std::max(b.l2_norm(), 1e-300);
+    TrilinosWrappers::MPI::Vector residual(owned, comm),
+      correction(owned, comm);
+    double       relative_residual = K.residual(residual, z, b) / b_norm;
+    unsigned int refinements       = 0;
     while (relative_residual > 1e-14 && refinements < 5)
       {
-        direct.vmult(correction, residual);
+        direct.solve(correction, residual);
         z += correction;
         const double next = K.residual(residual, z, b) / b_norm;
         ++refinements;
@@ -159,10 +165,10 @@ namespace ltn
     for (const unsigned int k : {0u, 1u})
       {
         const DiscreteModel &model = *system.models[k];
-        solution.fields[k]         = model.fixed_values;
-        for (index i = 0; i < model.roles.size(); ++i)
-          if (unknowns[k].position[i] != ModelUnknowns::none)
-            solution.fields[k][i] = z[x_offset[k] + unknowns[k].position[i]];
+        solution.fields[k]         = model.new_vector();
+        for (const index i : model.owned)
+          solution.fields[k](i) = z(x_offset[k] + i);
+        solution.fields[k].compress(VectorOperation::insert);
       }
     return solution;
   }

@@ -1,99 +1,57 @@
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-
+#include <ltn/base/partition.h>
 #include <ltn/coupling/model_solver.h>
 
 namespace ltn
 {
-  ModelSolver::ModelSolver(const DiscreteModel &model,
-                           const ModelUnknowns &unknowns)
+  ModelSolver::ModelSolver(const DiscreteModel &model, const bool with_adjoint)
     : model(model)
-    , unknowns(unknowns)
+    , control_dofs(model.controls.begin(), model.controls.end())
+    , direct(model.matrix, with_adjoint)
   {
-    using index           = types::global_dof_index;
-    const index n_free    = unknowns.free.size();
-    const index n_control = unknowns.control.size();
-
-    DynamicSparsityPattern ff(n_free, n_free), fc(n_free, n_control);
-    for (index r = 0; r < n_free; ++r)
-      for (auto entry = model.matrix.begin(unknowns.free[r]);
-           entry != model.matrix.end(unknowns.free[r]);
-           ++entry)
-        {
-          const index position = unknowns.position[entry->column()];
-          if (position == ModelUnknowns::none)
-            continue;
-          if (position < n_free)
-            ff.add(r, position);
-          else
-            fc.add(r, position - n_free);
-        }
-    free_free_sparsity.copy_from(ff);
-    free_control_sparsity.copy_from(fc);
-    free_free.reinit(free_free_sparsity);
-    free_control.reinit(free_control_sparsity);
-
-    data_rhs.reinit(n_free);
-    for (index r = 0; r < n_free; ++r)
-      {
-        const index row = unknowns.free[r];
-        data_rhs[r]     = model.rhs[row];
-        for (auto entry = model.matrix.begin(row);
-             entry != model.matrix.end(row);
-             ++entry)
-          {
-            const index position = unknowns.position[entry->column()];
-            if (position == ModelUnknowns::none)
-              data_rhs[r] -=
-                entry->value() * model.fixed_values[entry->column()];
-            else if (position < n_free)
-              free_free.set(r, position, entry->value());
-            else
-              free_control.set(r, position - n_free, entry->value());
-          }
-      }
-    direct.initialize(free_free);
+    control_partition =
+      contiguous_partition(control_dofs.size(), model.communicator);
+    first_control =
+      control_partition.is_empty() ? 0 : control_partition.nth_index_in_set(0);
   }
 
 
 
-  Vector<double>
-  ModelSolver::forward(const Vector<double> &theta, const bool with_data) const
+  TrilinosWrappers::MPI::Vector
+  ModelSolver::new_control_vector() const
   {
-    const auto     n_free = unknowns.free.size();
-    Vector<double> rhs(n_free);
-    free_control.vmult(rhs, theta);
-    rhs *= -1.;
-    if (with_data)
-      rhs += data_rhs;
-    Vector<double> state(n_free);
-    direct.vmult(state, rhs);
+    return TrilinosWrappers::MPI::Vector(control_partition, model.communicator);
+  }
 
-    Vector<double> field(model.roles.size());
+
+
+  TrilinosWrappers::MPI::Vector
+  ModelSolver::forward(const TrilinosWrappers::MPI::Vector &theta,
+                       const bool                           with_data) const
+  {
+    TrilinosWrappers::MPI::Vector rhs = model.new_vector();
     if (with_data)
-      field = model.fixed_values;
-    for (std::size_t r = 0; r < n_free; ++r)
-      field[unknowns.free[r]] = state[r];
-    for (std::size_t c = 0; c < unknowns.control.size(); ++c)
-      field[unknowns.control[c]] = theta[c];
+      rhs = model.rhs;
+    for (std::size_t c = 0; c < control_dofs.size(); ++c)
+      rhs(control_dofs[c]) = theta(first_control + c);
+    rhs.compress(VectorOperation::insert);
+
+    TrilinosWrappers::MPI::Vector field = model.new_vector();
+    direct.solve(field, rhs);
     return field;
   }
 
 
 
-  Vector<double>
-  ModelSolver::adjoint(const Vector<double> &z) const
+  TrilinosWrappers::MPI::Vector
+  ModelSolver::adjoint(const TrilinosWrappers::MPI::Vector &z) const
   {
-    Vector<double> z_free(unknowns.free.size());
-    for (std::size_t r = 0; r < z_free.size(); ++r)
-      z_free[r] = z[unknowns.free[r]];
-    Vector<double> multiplier(z_free.size());
-    direct.Tvmult(multiplier, z_free);
+    TrilinosWrappers::MPI::Vector multiplier = model.new_vector();
+    direct.solve_transposed(multiplier, z);
 
-    Vector<double> gradient(unknowns.control.size());
-    free_control.Tvmult(gradient, multiplier);
-    gradient *= -1.;
-    for (std::size_t c = 0; c < gradient.size(); ++c)
-      gradient[c] += z[unknowns.control[c]];
+    TrilinosWrappers::MPI::Vector gradient = new_control_vector();
+    for (std::size_t c = 0; c < control_dofs.size(); ++c)
+      gradient(first_control + c) = multiplier(control_dofs[c]);
+    gradient.compress(VectorOperation::insert);
     return gradient;
   }
 } // namespace ltn

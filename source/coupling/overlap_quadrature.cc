@@ -114,23 +114,51 @@ namespace ltn
     const ParticleDiffusion<dim> &nonlocal,
     const DoFHandler<dim>        &local_dofs)
   {
-    const MappingQ1<dim>  mapping;
-    GridTools::Cache<dim> cache(local_dofs.get_triangulation(), mapping);
-    const auto           &positions = nonlocal.get_positions();
-    const auto           &roles     = nonlocal.get_model().roles;
+    const auto                          &lattice = nonlocal.get_lattice();
+    const auto                          &fe      = local_dofs.get_fe();
+    const double                         tol     = geometry.tolerance();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
 
+    // Each point belongs to the one locally owned cell that holds it in the
+    // half-open box [lower - tol, upper - tol) (closed on faces at the
+    // boundary of the mesh), so every rank holds its own points once.
     OverlapQuadrature<dim> overlap;
-    for (types::global_dof_index i = 0; i < positions.size(); ++i)
-      // Omega_b = Omega_l ∩ (Omega_n ∪ control collar): the control
-      // particles are the control collar (all inside Omega_l).
-      if (roles[i] == DofRole::control ||
-          (roles[i] == DofRole::free && geometry.in_local_region(positions[i])))
+    for (const auto &cell : local_dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
         {
-          overlap.points.push_back(positions[i]);
-          overlap.weights.push_back(nonlocal.particle_volume());
-          overlap.nonlocal_rows.push_back({{i, 1.}});
-          overlap.local_rows.push_back(
-            evaluation_row(cache, local_dofs, positions[i]));
+          // The mesh is Cartesian: cells are axis-parallel boxes.
+          const Point<dim> lower = cell->vertex(0);
+          const Point<dim> upper =
+            cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
+          cell->get_dof_indices(dofs);
+          lattice.for_each_in_box(
+            lower,
+            upper,
+            tol,
+            [&](const auto &index, const types::global_dof_index number) {
+              const Point<dim> x = lattice.position(index);
+              Point<dim>       unit;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  if (x[d] >= upper[d] - tol &&
+                      !cell->face(2 * d + 1)->at_boundary())
+                    return;
+                  unit[d] = (x[d] - lower[d]) / (upper[d] - lower[d]);
+                }
+              // Omega_b = Omega_l ∩ (Omega_n ∪ control collar): the control
+              // particles are the control collar (all inside Omega_l).
+              const DofRole role = nonlocal.role(index);
+              if (role == DofRole::fixed ||
+                  (role == DofRole::free && !geometry.in_local_region(x)))
+                return;
+              overlap.points.push_back(x);
+              overlap.weights.push_back(nonlocal.particle_volume());
+              overlap.nonlocal_rows.push_back({{number, 1.}});
+              SparseRow row;
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                row.emplace_back(dofs[i], fe.shape_value(i, unit));
+              overlap.local_rows.push_back(std::move(row));
+            });
         }
     return overlap;
   }

@@ -1,6 +1,7 @@
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <ltn/base/input_error.h>
 #include <ltn/coupling/model_solver.h>
@@ -10,7 +11,12 @@ namespace ltn
 {
   namespace
   {
-    /** The reduced Hessian `V^T B^T W B V + alpha I` as an operator. */
+    using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
+
+    /**
+     * The reduced Hessian `V^T B^T W B V + alpha I` as an operator on the
+     * controls `[theta_n; theta_l]`, one block per model.
+     */
     template <int dim>
     class ReducedHessian
     {
@@ -19,49 +25,49 @@ namespace ltn
                      const std::array<ModelSolver *, 2> &solvers)
         : system(system)
         , solvers(solvers)
-        , n_nonlocal(system.unknowns[nonlocal_model].control.size())
       {}
 
-      /** Split controls into the two models' parts. */
-      std::array<Vector<double>, 2>
-      split(const Vector<double> &theta) const
+      BlockVectorType
+      new_control_vector() const
       {
-        std::array<Vector<double>, 2> parts{
-          {Vector<double>(n_nonlocal),
-           Vector<double>(theta.size() - n_nonlocal)}};
-        for (std::size_t i = 0; i < theta.size(); ++i)
-          (i < n_nonlocal ? parts[0][i] : parts[1][i - n_nonlocal]) = theta[i];
-        return parts;
+        BlockVectorType theta(2);
+        for (const unsigned int k : {0u, 1u})
+          theta.block(k) = solvers[k]->new_control_vector();
+        theta.collect_sizes();
+        return theta;
       }
 
-      /** `V^T B^T W d` for a mismatch @p d. */
-      Vector<double>
-      reduced_gradient(const Vector<double> &d) const
+      /** `V^T B^T W d` for a mismatch @p d at this rank's points. */
+      BlockVectorType
+      reduced_gradient(const std::vector<double> &d) const
       {
-        Vector<double> z_nonlocal, z_local;
-        system.mismatch_gradient(d, z_nonlocal, z_local);
-        const Vector<double> g_nonlocal = solvers[0]->adjoint(z_nonlocal);
-        const Vector<double> g_local    = solvers[1]->adjoint(z_local);
-        Vector<double>       g(g_nonlocal.size() + g_local.size());
-        for (std::size_t i = 0; i < g.size(); ++i)
-          g[i] = (i < n_nonlocal) ? g_nonlocal[i] : g_local[i - n_nonlocal];
+        std::array<TrilinosWrappers::MPI::Vector, 2> z;
+        system.mismatch_gradient(d, z[0], z[1]);
+        BlockVectorType g(2);
+        for (const unsigned int k : {0u, 1u})
+          g.block(k) = solvers[k]->adjoint(z[k]);
+        g.collect_sizes();
         return g;
       }
 
-      void
-      vmult(Vector<double> &dst, const Vector<double> &theta) const
+      /** The mismatch of the fields for controls @p theta. */
+      std::vector<double>
+      mismatch(const BlockVectorType &theta, const bool with_data) const
       {
-        const auto parts = split(theta);
-        dst              = reduced_gradient(
-          system.mismatch(solvers[0]->forward(parts[0], false),
-                          solvers[1]->forward(parts[1], false)));
+        return system.mismatch(solvers[0]->forward(theta.block(0), with_data),
+                               solvers[1]->forward(theta.block(1), with_data));
+      }
+
+      void
+      vmult(BlockVectorType &dst, const BlockVectorType &theta) const
+      {
+        dst = reduced_gradient(mismatch(theta, false));
         dst.add(system.alpha, theta);
       }
 
     private:
       const CouplingSystem<dim>         &system;
       const std::array<ModelSolver *, 2> solvers;
-      const std::size_t                  n_nonlocal;
     };
   } // namespace
 
@@ -73,25 +79,22 @@ namespace ltn
                          const double               relative_tolerance,
                          const unsigned int         max_iterations)
   {
-    ModelSolver               nonlocal_solver(*system.models[nonlocal_model],
-                                system.unknowns[nonlocal_model]);
-    ModelSolver               local_solver(*system.models[local_model],
-                             system.unknowns[local_model]);
+    ModelSolver nonlocal_solver(*system.models[nonlocal_model], true);
+    ModelSolver local_solver(*system.models[local_model], true);
     const ReducedHessian<dim> hessian(system,
                                       {{&nonlocal_solver, &local_solver}});
 
-    Vector<double> theta(system.n_controls());
-    const auto     zero = hessian.split(theta);
-    Vector<double> rhs  = hessian.reduced_gradient(
-      system.mismatch(nonlocal_solver.forward(zero[0], true),
-                      local_solver.forward(zero[1], true)));
+    BlockVectorType theta = hessian.new_control_vector();
+    BlockVectorType rhs =
+      hessian.reduced_gradient(hessian.mismatch(theta, true));
     rhs *= -1.;
 
     CouplingSolution solution;
-    if (rhs.l2_norm() > 0)
+    const double     rhs_norm = rhs.l2_norm();
+    if (rhs_norm > 0)
       {
         ReductionControl control(max_iterations, 0., relative_tolerance);
-        SolverCG<Vector<double>> cg(control);
+        SolverCG<BlockVectorType> cg(control);
         try
           {
             cg.solve(hessian, theta, rhs, PreconditionIdentity());
@@ -104,14 +107,14 @@ namespace ltn
               to_string(relative_tolerance) +
               " within Coupling/Maximum iterations = " +
               std::to_string(max_iterations) + " (relative residual " +
-              to_string(control.last_value() / rhs.l2_norm()) + ")");
+              to_string(control.last_value() / rhs_norm) + ")");
           }
         solution.iterations = control.last_step();
-        solution.residual   = control.last_value() / rhs.l2_norm();
+        solution.residual   = control.last_value() / rhs_norm;
       }
-    const auto parts                = hessian.split(theta);
-    solution.fields[nonlocal_model] = nonlocal_solver.forward(parts[0], true);
-    solution.fields[local_model]    = local_solver.forward(parts[1], true);
+    solution.fields[nonlocal_model] =
+      nonlocal_solver.forward(theta.block(0), true);
+    solution.fields[local_model] = local_solver.forward(theta.block(1), true);
     return solution;
   }
 

@@ -87,18 +87,21 @@ namespace ltn
                                          dof_handler,
                                          support_points);
 
-    model.roles.resize(dof_handler.n_dofs());
-    const double tol = 1e-10 * h;
-    for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-      {
-        if (geometry.nonlocal_region.contains_strictly(support_points[i], tol))
-          model.roles[i] = DofRole::free;
-        else
-          model.roles[i] = (geometry.nonlocal_region_of(support_points[i], 0) ==
-                            Region::physical_collar) ?
-                             DofRole::fixed :
-                             DofRole::control;
-      }
+    // Serial: every rank holds all of the 1D model.
+    const auto n       = dof_handler.n_dofs();
+    model.communicator = MPI_COMM_SELF;
+    model.owned        = complete_index_set(n);
+    model.relevant     = model.owned;
+    model.controls     = IndexSet(n);
+    model.fixed        = IndexSet(n);
+    const double tol   = 1e-10 * h;
+    for (types::global_dof_index i = 0; i < n; ++i)
+      if (!geometry.nonlocal_region.contains_strictly(support_points[i], tol))
+        (geometry.nonlocal_region_of(support_points[i], 0) ==
+             Region::physical_collar ?
+           model.fixed :
+           model.controls)
+          .add_index(i);
   }
 
 
@@ -109,10 +112,18 @@ namespace ltn
   {
     assemble_matrix();
     assemble_rhs(rhs);
-    model.fixed_values.reinit(dof_handler.n_dofs());
-    for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-      if (model.roles[i] == DofRole::fixed)
-        model.fixed_values[i] = volume_data.value(support_points[i]);
+
+    // Close the model: identity rows for the collar.
+    std::vector<types::global_dof_index> collar;
+    for (const IndexSet *rows : {&model.fixed, &model.controls})
+      collar.insert(collar.end(), rows->begin(), rows->end());
+    model.matrix.clear_rows(collar, 1.);
+    for (const auto i : model.controls)
+      model.rhs(i) = 0;
+    for (const auto i : model.fixed)
+      model.rhs(i) = volume_data.value(support_points[i]);
+    model.matrix.compress(VectorOperation::insert);
+    model.rhs.compress(VectorOperation::insert);
   }
 
 
@@ -166,8 +177,7 @@ namespace ltn
       for (const auto i : pair_dofs)
         dsp.add_entries(i, pair_dofs.begin(), pair_dofs.end(), true);
     });
-    model.sparsity.copy_from(dsp);
-    model.matrix.reinit(model.sparsity);
+    model.matrix.reinit(model.owned, model.owned, dsp, model.communicator);
 
     const double    beta = kernel.exponent();
     const double    c    = kernel.scale();
@@ -269,9 +279,12 @@ namespace ltn
         }
 
       for (unsigned int i = 0; i < n; ++i)
-        for (unsigned int j = 0; j < n; ++j)
-          model.matrix.add(pair_dofs[i], pair_dofs[j], local_matrix(i, j));
+        model.matrix.add(pair_dofs[i],
+                         n,
+                         pair_dofs.data(),
+                         &local_matrix(i, 0));
     });
+    model.matrix.compress(VectorOperation::add);
   }
 
 
@@ -279,7 +292,7 @@ namespace ltn
   void
   NonlocalWeakForm1D::assemble_rhs(const Function<1> &rhs)
   {
-    model.rhs.reinit(dof_handler.n_dofs());
+    model.rhs = model.new_vector();
     const QGauss<1>                      quadrature(fe.degree + 3);
     FEValues<1>                          fe_values(fe,
                           quadrature,
@@ -295,10 +308,11 @@ namespace ltn
             {
               const double f = rhs.value(fe_values.quadrature_point(q));
               for (unsigned int i = 0; i < dofs.size(); ++i)
-                model.rhs[dofs[i]] +=
+                model.rhs(dofs[i]) +=
                   f * fe_values.shape_value(i, q) * fe_values.JxW(q);
             }
         }
+    model.rhs.compress(VectorOperation::add);
   }
 
 
@@ -319,13 +333,10 @@ namespace ltn
 
 
 
-  std::vector<Region>
-  NonlocalWeakForm1D::dof_regions() const
+  Region
+  NonlocalWeakForm1D::region_of(const Point<1> &p) const
   {
-    std::vector<Region> regions;
-    for (const Point<1> &p : support_points)
-      regions.push_back(geometry.nonlocal_region_of(p, kernel.horizon()));
-    return regions;
+    return geometry.nonlocal_region_of(p, kernel.horizon());
   }
 
 
@@ -339,8 +350,8 @@ namespace ltn
 
 
   ErrorNorms
-  NonlocalWeakForm1D::errors(const Vector<double> &field,
-                             const Function<1>    &exact) const
+  NonlocalWeakForm1D::errors(const TrilinosWrappers::MPI::Vector &field,
+                             const Function<1>                   &exact) const
   {
     const double tol = geometry.tolerance();
     return field_errors<1>(dof_handler, field, exact, [&](const Point<1> &p) {

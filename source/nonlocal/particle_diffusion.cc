@@ -1,64 +1,37 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <ltn/base/partition.h>
 #include <ltn/nonlocal/particle_diffusion.h>
 
 #include <cmath>
-#include <set>
 
 namespace ltn
 {
   template <int dim>
   ParticleDiffusion<dim>::ParticleDiffusion(const Geometry<dim> &geometry,
                                             const Kernel        &kernel,
-                                            const double         spacing)
+                                            const double         spacing,
+                                            const MPI_Comm       communicator)
     : geometry(geometry)
     , kernel(kernel)
     , spacing(spacing)
     , stencil(kernel, spacing)
+    , lattice(geometry.nonlocal_region, spacing, stencil.offsets())
   {
-    // Lattice cells of Omega_n are 0 <= i_d < n_d; the collar extends them
-    // by the stencil's radius, keeping the cells some particle of Omega_n
-    // reaches: those whose offset from the nearest cell of Omega_n is a
-    // stencil offset.
-    const std::set<std::array<int, dim>> reach(stencil.offsets().begin(),
-                                               stencil.offsets().end());
-    const int                            R = stencil.radius();
-    std::array<int, dim>                 n, extent;
-    unsigned int                         n_candidates = 1;
-    for (unsigned int d = 0; d < dim; ++d)
+    model.communicator = communicator;
+    model.owned        = even_partition(lattice.n_particles(), communicator);
+    model.controls     = IndexSet(lattice.n_particles());
+    model.fixed        = IndexSet(lattice.n_particles());
+    for (const auto i : model.owned)
       {
-        n[d] = static_cast<int>(std::round((geometry.nonlocal_region.upper[d] -
-                                            geometry.nonlocal_region.lower[d]) /
-                                           spacing));
-        extent[d] = n[d] + 2 * R;
-        n_candidates *= extent[d];
+        const DofRole r = role(lattice.index(i));
+        if (r == DofRole::control)
+          model.controls.add_index(i);
+        else if (r == DofRole::fixed)
+          model.fixed.add_index(i);
       }
-
-    const double tol = geometry.tolerance();
-    for (unsigned int c = 0; c < n_candidates; ++c)
-      {
-        std::array<int, dim> index, offset;
-        unsigned int         rest   = c;
-        bool                 inside = true;
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            index[d] = static_cast<int>(rest % extent[d]) - R;
-            rest /= extent[d];
-            offset[d] = index[d] - std::clamp(index[d], 0, n[d] - 1);
-            inside &= (offset[d] == 0);
-          }
-        if (!inside && reach.count(offset) == 0)
-          continue;
-        Point<dim> x;
-        for (unsigned int d = 0; d < dim; ++d)
-          x[d] = geometry.nonlocal_region.lower[d] + (index[d] + 0.5) * spacing;
-        positions.push_back(x);
-        indices.push_back(index);
-        model.roles.push_back(inside ? DofRole::free :
-                              geometry.body.contains(x, tol) ?
-                                       DofRole::control :
-                                       DofRole::fixed);
-      }
+    model.controls.compress();
+    model.fixed.compress();
   }
 
 
@@ -68,69 +41,70 @@ namespace ltn
   ParticleDiffusion<dim>::assemble(const Function<dim> &rhs,
                                    const Function<dim> &volume_data)
   {
-    // Particle number of each lattice index (dense over the extended box).
-    const int            R = stencil.radius();
-    std::array<int, dim> lo, extent;
-    for (unsigned int d = 0; d < dim; ++d)
+    const auto &offsets      = stencil.offsets();
+    const auto &coefficients = stencil.coefficients();
+    const auto  n            = lattice.n_particles();
+
+    // The row of particle i: its own number first, then its neighbours'.
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    const auto make_row = [&](const types::global_dof_index i) {
+      const LatticeIndex index = lattice.index(i);
+      columns.assign(1, i);
+      values.assign(1, 1.);
+      if (!lattice.inside(index))
+        return;
+      values[0] = 0;
+      for (std::size_t k = 0; k < offsets.size(); ++k)
+        {
+          LatticeIndex neighbour = index;
+          for (unsigned int d = 0; d < dim; ++d)
+            neighbour[d] += offsets[k][d];
+          const auto j = lattice.number(neighbour);
+          Assert(j != ParticleLattice<dim>::invalid, ExcInternalError());
+          columns.push_back(j);
+          values.push_back(-2 * coefficients[k]);
+          values[0] += 2 * coefficients[k];
+        }
+    };
+
+    model.relevant = model.owned;
+    for (const auto i : model.owned)
       {
-        lo[d] = -R, extent[d] = 2 * R + 1;
-        for (const auto &index : indices)
-          extent[d] = std::max(extent[d], index[d] + R + 1);
+        make_row(i);
+        model.relevant.add_indices(columns.begin(), columns.end());
       }
-    const auto linear = [&](const std::array<int, dim> &index) {
-      std::size_t position = 0;
-      for (int d = dim - 1; d >= 0; --d)
-        position = position * extent[d] + (index[d] - lo[d]);
-      return position;
-    };
-    std::size_t n_cells = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      n_cells *= extent[d];
-    std::vector<types::global_dof_index> particle_at(
-      n_cells, numbers::invalid_dof_index);
-    for (types::global_dof_index i = 0; i < indices.size(); ++i)
-      particle_at[linear(indices[i])] = i;
+    model.relevant.compress();
 
-    const auto neighbour = [&](const types::global_dof_index i,
-                               const std::array<int, dim>   &offset) {
-      std::array<int, dim> index = indices[i];
-      for (unsigned int d = 0; d < dim; ++d)
-        index[d] += offset[d];
-      const auto j = particle_at[linear(index)];
-      Assert(j != numbers::invalid_dof_index, ExcInternalError());
-      return j;
-    };
+    DynamicSparsityPattern dsp(n, n, model.relevant);
+    for (const auto i : model.owned)
+      {
+        make_row(i);
+        std::sort(columns.begin(), columns.end());
+        dsp.add_entries(i, columns.begin(), columns.end(), true);
+      }
+    model.matrix.reinit(model.owned, model.owned, dsp, model.communicator);
+    model.rhs = model.new_vector();
 
-    const auto                   &offsets      = stencil.offsets();
-    const auto                   &coefficients = stencil.coefficients();
-    const types::global_dof_index n            = positions.size();
-    DynamicSparsityPattern        dsp(n);
-    for (types::global_dof_index i = 0; i < n; ++i)
-      if (model.roles[i] == DofRole::free)
-        {
-          dsp.add(i, i);
-          for (const auto &offset : offsets)
-            dsp.add(i, neighbour(i, offset));
-        }
-    model.sparsity.copy_from(dsp);
-    model.matrix.reinit(model.sparsity);
-    model.rhs.reinit(n);
-    model.fixed_values.reinit(n);
-
-    for (types::global_dof_index i = 0; i < n; ++i)
-      if (model.roles[i] == DofRole::free)
-        {
-          for (std::size_t k = 0; k < offsets.size(); ++k)
-            {
-              model.matrix.add(i, i, 2 * coefficients[k]);
-              model.matrix.add(i,
-                               neighbour(i, offsets[k]),
-                               -2 * coefficients[k]);
-            }
-          model.rhs[i] = rhs.value(positions[i]);
-        }
-      else if (model.roles[i] == DofRole::fixed)
-        model.fixed_values[i] = volume_data.value(positions[i]);
+    for (const auto i : model.owned)
+      {
+        make_row(i);
+        model.matrix.set(i, columns.size(), columns.data(), values.data());
+        const Point<dim> x = lattice.position(lattice.index(i));
+        switch (model.role(i))
+          {
+            case DofRole::free:
+              model.rhs(i) = rhs.value(x);
+              break;
+            case DofRole::fixed:
+              model.rhs(i) = volume_data.value(x);
+              break;
+            case DofRole::control:
+              break;
+          }
+      }
+    model.matrix.compress(VectorOperation::insert);
+    model.rhs.compress(VectorOperation::insert);
   }
 
 
@@ -145,10 +119,23 @@ namespace ltn
 
 
   template <int dim>
-  const std::vector<Point<dim>> &
-  ParticleDiffusion<dim>::get_positions() const
+  const ParticleLattice<dim> &
+  ParticleDiffusion<dim>::get_lattice() const
   {
-    return positions;
+    return lattice;
+  }
+
+
+
+  template <int dim>
+  DofRole
+  ParticleDiffusion<dim>::role(const LatticeIndex &index) const
+  {
+    return lattice.inside(index) ? DofRole::free :
+           geometry.body.contains(lattice.position(index),
+                                  geometry.tolerance()) ?
+                                   DofRole::control :
+                                   DofRole::fixed;
   }
 
 
@@ -163,11 +150,23 @@ namespace ltn
 
 
   template <int dim>
+  std::vector<Point<dim>>
+  ParticleDiffusion<dim>::owned_positions() const
+  {
+    std::vector<Point<dim>> result;
+    for (const auto i : model.owned)
+      result.push_back(lattice.position(lattice.index(i)));
+    return result;
+  }
+
+
+
+  template <int dim>
   std::vector<Region>
-  ParticleDiffusion<dim>::regions() const
+  ParticleDiffusion<dim>::owned_regions() const
   {
     std::vector<Region> result;
-    for (const auto &x : positions)
+    for (const auto &x : owned_positions())
       result.push_back(geometry.nonlocal_region_of(x, kernel.horizon()));
     return result;
   }
@@ -176,18 +175,19 @@ namespace ltn
 
   template <int dim>
   ErrorNorms
-  ParticleDiffusion<dim>::errors(const Vector<double> &field,
-                                 const Function<dim>  &exact) const
+  ParticleDiffusion<dim>::errors(const TrilinosWrappers::MPI::Vector &field,
+                                 const Function<dim> &exact) const
   {
     ErrorNorms errors;
-    for (std::size_t i = 0; i < positions.size(); ++i)
-      if (model.roles[i] == DofRole::free)
+    for (const auto i : model.owned)
+      if (model.role(i) == DofRole::free)
         {
-          const double e = field[i] - exact.value(positions[i]);
+          const double e =
+            field(i) - exact.value(lattice.position(lattice.index(i)));
           errors.l2_squared += particle_volume() * e * e;
           errors.add_pointwise(e);
         }
-    return errors;
+    return errors.over_all_ranks(model.communicator);
   }
 
 

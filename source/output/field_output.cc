@@ -1,43 +1,70 @@
 #include <deal.II/base/data_out_base.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/mapping_q1.h>
+
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <ltn/output/field_output.h>
+#include <ltn/output/parallel_vtu.h>
 
 #include <fstream>
+#include <map>
 
 namespace ltn
 {
   template <int dim>
-  void
-  write_field_vtu(const DoFHandler<dim>     &dof_handler,
-                  const Vector<double>      &field,
-                  const Function<dim>       *exact_solution,
-                  const std::vector<Region> &regions,
-                  const std::string         &filename)
+  std::string
+  write_field_vtu(const DoFHandler<dim>               &dof_handler,
+                  const TrilinosWrappers::MPI::Vector &field,
+                  const Function<dim>                 *exact_solution,
+                  const std::function<Region(const Point<dim> &)> &region_of,
+                  const std::string                               &directory,
+                  const std::string                               &name)
   {
+    const MPI_Comm comm  = dof_handler.get_communicator();
+    const IndexSet owned = dof_handler.locally_owned_dofs();
+    IndexSet       relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    const auto ghosted = [&](const TrilinosWrappers::MPI::Vector &v) {
+      TrilinosWrappers::MPI::Vector result(owned, relevant, comm);
+      result = v;
+      return result;
+    };
+
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(field, "u");
 
-    Vector<double> exact(dof_handler.n_dofs()), error(dof_handler.n_dofs());
+    TrilinosWrappers::MPI::Vector exact(owned, comm), error(owned, comm);
+    TrilinosWrappers::MPI::Vector exact_ghosted, error_ghosted;
     if (exact_solution != nullptr)
       {
         VectorTools::interpolate(dof_handler, *exact_solution, exact);
-        error = field;
-        error -= exact;
-        data_out.add_data_vector(exact, "u_exact");
-        data_out.add_data_vector(error, "error");
+        for (const auto i : owned)
+          error(i) = field(i) - exact(i);
+        error.compress(VectorOperation::insert);
+        exact_ghosted = ghosted(exact);
+        error_ghosted = ghosted(error);
+        data_out.add_data_vector(exact_ghosted, "u_exact");
+        data_out.add_data_vector(error_ghosted, "error");
       }
-    Vector<double> region(regions.size());
-    for (std::size_t i = 0; i < regions.size(); ++i)
-      region[i] = static_cast<double>(regions[i]);
-    data_out.add_data_vector(region, "region");
+
+    std::map<types::global_dof_index, Point<dim>> support_points;
+    DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                         dof_handler,
+                                         support_points);
+    TrilinosWrappers::MPI::Vector region(owned, comm);
+    for (const auto i : owned)
+      region(i) = static_cast<double>(region_of(support_points.at(i)));
+    region.compress(VectorOperation::insert);
+    const TrilinosWrappers::MPI::Vector region_ghosted = ghosted(region);
+    data_out.add_data_vector(region_ghosted, "region");
 
     data_out.build_patches(dof_handler.get_fe().degree);
-    std::ofstream out(filename);
-    data_out.write_vtu(out);
+    return write_parallel_vtu(data_out, directory, name, comm);
   }
 
 
@@ -47,26 +74,22 @@ namespace ltn
     const std::string                                 &filename,
     const std::vector<std::pair<double, std::string>> &level_files)
   {
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
     std::ofstream out(filename);
     DataOutBase::write_pvd_record(out, level_files);
   }
 
-  template void
-  write_field_vtu(const DoFHandler<1> &,
-                  const Vector<double> &,
-                  const Function<1> *,
-                  const std::vector<Region> &,
-                  const std::string &);
-  template void
-  write_field_vtu(const DoFHandler<2> &,
-                  const Vector<double> &,
-                  const Function<2> *,
-                  const std::vector<Region> &,
-                  const std::string &);
-  template void
-  write_field_vtu(const DoFHandler<3> &,
-                  const Vector<double> &,
-                  const Function<3> *,
-                  const std::vector<Region> &,
-                  const std::string &);
+#define LTN_INSTANTIATE(dim)                           \
+  template std::string write_field_vtu(                \
+    const DoFHandler<dim> &,                           \
+    const TrilinosWrappers::MPI::Vector &,             \
+    const Function<dim> *,                             \
+    const std::function<Region(const Point<dim> &)> &, \
+    const std::string &,                               \
+    const std::string &);
+  LTN_INSTANTIATE(1)
+  LTN_INSTANTIATE(2)
+  LTN_INSTANTIATE(3)
+#undef LTN_INSTANTIATE
 } // namespace ltn

@@ -1,64 +1,74 @@
 #include <ltn/output/field_output.h>
 #include <ltn/output/nonlocal_output.h>
+#include <ltn/output/parallel_vtu.h>
 #include <ltn/output/point_cloud_output.h>
-
-#include <fstream>
 
 namespace ltn
 {
-  void
-  write_nonlocal_vtu(const NonlocalWeakForm1D &nonlocal,
-                     const Vector<double>     &field,
-                     const Function<1>        *exact,
-                     const std::string        &filename)
+  std::string
+  write_nonlocal_vtu(const NonlocalWeakForm1D            &nonlocal,
+                     const TrilinosWrappers::MPI::Vector &field,
+                     const Function<1>                   *exact,
+                     const std::string                   &directory,
+                     const std::string                   &name)
   {
-    write_field_vtu<1>(nonlocal.get_dof_handler(),
-                       field,
-                       exact,
-                       nonlocal.dof_regions(),
-                       filename);
+    return write_field_vtu<1>(
+      nonlocal.get_dof_handler(),
+      field,
+      exact,
+      [&](const Point<1> &p) { return nonlocal.region_of(p); },
+      directory,
+      name);
   }
 
 
 
   template <int dim>
-  void
-  write_nonlocal_vtu(const ParticleDiffusion<dim> &nonlocal,
-                     const Vector<double>         &field,
-                     const Function<dim>          *exact,
-                     const std::string            &filename)
+  std::string
+  write_nonlocal_vtu(const ParticleDiffusion<dim>        &nonlocal,
+                     const TrilinosWrappers::MPI::Vector &field,
+                     const Function<dim>                 *exact,
+                     const std::string                   &directory,
+                     const std::string                   &name)
   {
-    const auto &positions = nonlocal.get_positions();
+    const auto         &owned     = nonlocal.get_model().owned;
+    const auto          positions = nonlocal.owned_positions();
+    std::vector<double> values(field.begin(), field.end());
     std::vector<std::pair<std::string, std::vector<double>>> fields;
-    fields.emplace_back("u", std::vector<double>(field.begin(), field.end()));
     if (exact != nullptr)
       {
-        std::vector<double> values(positions.size()), error(positions.size());
+        std::vector<double> exact_values, error;
         for (std::size_t i = 0; i < positions.size(); ++i)
           {
-            values[i] = exact->value(positions[i]);
-            error[i]  = field[i] - values[i];
+            exact_values.push_back(exact->value(positions[i]));
+            error.push_back(values[i] - exact_values.back());
           }
-        fields.emplace_back("u_exact", values);
+        fields.emplace_back("u_exact", exact_values);
         fields.emplace_back("error", error);
       }
+    fields.emplace(fields.begin(), "u", std::move(values));
     std::vector<double> tags;
-    for (const Region r : nonlocal.regions())
+    for (const Region r : nonlocal.owned_regions())
       tags.push_back(static_cast<double>(r));
     fields.emplace_back("region", tags);
+    AssertDimension(positions.size(), owned.n_elements());
 
-    std::ofstream out(filename);
-    PointCloudOutput<dim>(positions, fields).write_vtu(out);
+    return write_parallel_vtu(PointCloudOutput<dim>(positions, fields),
+                              directory,
+                              name,
+                              nonlocal.get_model().communicator);
   }
 
-  template void
+  template std::string
   write_nonlocal_vtu(const ParticleDiffusion<2> &,
-                     const Vector<double> &,
+                     const TrilinosWrappers::MPI::Vector &,
                      const Function<2> *,
+                     const std::string &,
                      const std::string &);
-  template void
+  template std::string
   write_nonlocal_vtu(const ParticleDiffusion<3> &,
-                     const Vector<double> &,
+                     const TrilinosWrappers::MPI::Vector &,
                      const Function<3> *,
+                     const std::string &,
                      const std::string &);
 } // namespace ltn

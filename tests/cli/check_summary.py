@@ -4,6 +4,7 @@ every documented key with values of the right type, and the VTU, PVD and
 used_parameters.prm files are there."""
 import json
 import os
+import re
 import sys
 
 directory = sys.argv[1]
@@ -49,6 +50,12 @@ for name in ("used_parameters.prm", "nonlocal_field.pvd", "local_field.pvd"):
     assert os.path.isfile(os.path.join(directory, name)), name
 for l in range(levels):
     for field in ("nonlocal", "local"):
-        name = f"{field}_field_level-{l:02d}.vtu"
-        assert os.path.isfile(os.path.join(directory, name)), name
+        name = f"{field}_field_level-{l:02d}.pvtu"
+        path = os.path.join(directory, name)
+        assert os.path.isfile(path), name
+        # Every piece the record lists, one per rank, is there.
+        pieces = re.findall(r'<Piece Source="([^"]+)"', open(path).read())
+        assert pieces, f"{name} lists no pieces"
+        for piece in pieces:
+            assert os.path.isfile(os.path.join(directory, piece)), piece
 print("summary.json and output files OK")

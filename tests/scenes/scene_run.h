@@ -85,11 +85,12 @@ relative_difference(const ltn::CouplingSolution &a,
 {
   double difference = 0, scale = 0;
   for (const unsigned int k : {0u, 1u})
-    for (std::size_t i = 0; i < a.fields[k].size(); ++i)
+    if (b.fields[k].size() > 0)
       {
-        difference =
-          std::max(difference, std::abs(a.fields[k][i] - b.fields[k][i]));
-        scale = std::max(scale, std::abs(b.fields[k][i]));
+        dealii::TrilinosWrappers::MPI::Vector d = a.fields[k];
+        d -= b.fields[k];
+        difference = std::max(difference, d.linfty_norm());
+        scale      = std::max(scale, b.fields[k].linfty_norm());
       }
   return difference / scale;
 }

@@ -34,18 +34,18 @@ namespace
     FunctionParser<1>  exact(u), rhs(minus_u_second_derivative);
     nonlocal.assemble(rhs, exact);
 
-    const DiscreteModel &model = nonlocal.get_model();
-    Vector<double>       interpolant(model.roles.size());
+    const DiscreteModel          &model       = nonlocal.get_model();
+    TrilinosWrappers::MPI::Vector interpolant = model.new_vector();
     VectorTools::interpolate(nonlocal.get_dof_handler(), exact, interpolant);
-    Vector<double> Au(model.roles.size());
+    TrilinosWrappers::MPI::Vector Au = model.new_vector();
     model.matrix.vmult(Au, interpolant);
 
     double error = 0, scale = 0;
-    for (std::size_t i = 0; i < model.roles.size(); ++i)
-      if (model.roles[i] == DofRole::free)
+    for (const auto i : model.owned)
+      if (model.role(i) == DofRole::free)
         {
-          error = std::max(error, std::abs(Au[i] - model.rhs[i]));
-          scale = std::max(scale, std::abs(model.rhs[i]));
+          error = std::max(error, std::abs(Au(i) - model.rhs(i)));
+          scale = std::max(scale, std::abs(model.rhs(i)));
         }
     // Rows of A are O(1/h): measure against that size for zero data.
     return error / std::max(scale, 1.);
@@ -92,17 +92,17 @@ TEST_CASE("nonlocal degrees of freedom are classified by region", "[nonlocal]")
   const Kernel       kernel("constant", 0.5, 1, eps);
   NonlocalWeakForm1D nonlocal(geometry, kernel, 1, h);
   const auto        &points = nonlocal.get_support_points();
-  const auto        &roles  = nonlocal.get_model().roles;
+  const auto        &model  = nonlocal.get_model();
   // ceil(eps / h) = 3 collar elements per side: nodes -3h .. 1 + 3h.
   REQUIRE(points.size() == 16 + 6 + 1);
   for (std::size_t i = 0; i < points.size(); ++i)
     {
       const double x = points[i][0];
       if (x <= 1e-12)
-        CHECK(roles[i] == DofRole::fixed);
+        CHECK(model.role(i) == DofRole::fixed);
       else if (x >= 1 - 1e-12)
-        CHECK(roles[i] == DofRole::control);
+        CHECK(model.role(i) == DofRole::control);
       else
-        CHECK(roles[i] == DofRole::free);
+        CHECK(model.role(i) == DofRole::free);
     }
 }

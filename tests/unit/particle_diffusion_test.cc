@@ -41,27 +41,30 @@ namespace
   {
     const Geometry<dim>    geometry = unit_layout<dim>();
     const Kernel           kernel(kernel_name, 0.5, dim, m * h);
-    ParticleDiffusion<dim> particles(geometry, kernel, h);
+    ParticleDiffusion<dim> particles(geometry, kernel, h, MPI_COMM_WORLD);
     const std::string      variables = dim == 2 ? "x,y" : "x,y,z";
     FunctionParser<dim>    u(p), f(minus_laplacian);
     particles.assemble(f, u);
 
-    const auto    &model = particles.get_model();
-    Vector<double> values(model.roles.size()), Au(model.roles.size());
-    for (std::size_t i = 0; i < values.size(); ++i)
-      values[i] = u.value(particles.get_positions()[i]);
+    const auto                   &model     = particles.get_model();
+    const auto                    positions = particles.owned_positions();
+    TrilinosWrappers::MPI::Vector values    = model.new_vector(),
+                                  Au        = model.new_vector();
+    std::size_t k                           = 0;
+    for (const auto i : model.owned)
+      values(i) = u.value(positions[k++]);
+    values.compress(VectorOperation::insert);
     model.matrix.vmult(Au, values);
-    double defect = 0;
-    for (std::size_t i = 0; i < values.size(); ++i)
-      if (model.roles[i] == DofRole::free)
-        defect = std::max(defect, std::abs(Au[i] - model.rhs[i]));
+    double defect = 0, diagonal = 0;
+    for (const auto i : model.owned)
+      if (model.role(i) == DofRole::free)
+        {
+          defect   = std::max(defect, std::abs(Au(i) - model.rhs(i)));
+          diagonal = model.matrix.diag_element(i);
+        }
     // Scale: the diagonal of A, ~ 1/h^2.
-    return defect / model.matrix.diag_element(0 + [&] {
-      std::size_t i = 0;
-      while (model.roles[i] != DofRole::free)
-        ++i;
-      return i;
-    }());
+    return Utilities::MPI::max(defect, MPI_COMM_WORLD) /
+           Utilities::MPI::max(diagonal, MPI_COMM_WORLD);
   }
 } // namespace
 

@@ -1,10 +1,11 @@
 #pragma once
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 
 #include <deal.II/dofs/dof_handler.h>
 
-#include <deal.II/lac/vector.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <functional>
 
@@ -28,17 +29,23 @@ namespace ltn
 
     double
     l2() const;
+
+    /** The norms over the pieces of all ranks of @p communicator. */
+    ErrorNorms
+    over_all_ranks(const MPI_Comm communicator) const;
   };
 
   /**
-   * The error of a finite element field against @p exact over the cells
-   * whose centre satisfies @p in_region: L2 by Gauss quadrature of degree
-   * `p + 3`, max over an iterated trapezoidal grid that contains every node.
+   * The error of a finite element field against @p exact over the locally
+   * owned cells whose centre satisfies @p in_region, summed over all ranks:
+   * L2 by Gauss quadrature of degree `p + 3`, max over an iterated
+   * trapezoidal grid that contains every node. @p field must hold the
+   * values of the locally relevant degrees of freedom.
    */
   template <int dim>
   ErrorNorms
   field_errors(const DoFHandler<dim>                         &dof_handler,
-               const Vector<double>                          &field,
+               const TrilinosWrappers::MPI::Vector           &field,
                const Function<dim>                           &exact,
                const std::function<bool(const Point<dim> &)> &in_region);
 } // namespace ltn

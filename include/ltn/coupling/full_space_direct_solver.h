@@ -5,19 +5,24 @@
 namespace ltn
 {
   /**
-   * Solve the full-space optimality system (states, controls and Lagrange
-   * multipliers of both models at once)
+   * Solve the full-space optimality system (fields and Lagrange multipliers
+   * of both models at once)
    *
-   *   [ H + alpha R   C^T ] [ x      ]   [ -B^T W r_0 ]
-   *   [ C             0   ] [ lambda ] = [  F         ]
+   *   [ B^T W B + alpha R   C^T ] [ x  ]   [ 0 ]
+   *   [ C                   D   ] [ mu ] = [ r ]
    *
-   * with a sparse direct solver (UMFPACK): `x = [x_n; x_l]` the states and
-   * controls, `H = B^T W B` with `B = [E, -P]`, `C = diag(A_n, A_l)` on the
-   * free rows, `r_0` the mismatch of the fixed data alone, and `R` the
-   * identity on the controls. The solution is improved by iterative
-   * refinement with the same factors; the reported residual is
-   * `|K z - b| / |b|` of this system, and `iterations` counts one solve
-   * plus the refinement steps. A residual above 1e-8 is an error.
+   * with a distributed sparse direct solver (DirectSolver): `x = [u_n; u_l]`
+   * all degrees of freedom of both models, `B = [E, -P]` the overlap rows,
+   * `R` the identity on the controls, `C = diag(M_n, M_l)` with the control
+   * rows left empty and `D` the identity on them (so their multipliers
+   * vanish and the controls are free), `r` the models' data. The solution
+   * is improved by iterative refinement with the same factors; the reported
+   * residual is `|K z - b| / |b|` of this system, and `iterations` counts
+   * one solve plus the refinement steps. A residual above 1e-8 is an error.
+   *
+   * The unknowns are numbered `[u_n | u_l | mu_n | mu_l]`, each block in its
+   * model's numbering, and each rank owns the rows of its models' owned
+   * degrees of freedom.
    */
   template <int dim>
   CouplingSolution

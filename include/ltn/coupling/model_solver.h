@@ -1,12 +1,13 @@
 #pragma once
 
-#include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
-#include <deal.II/lac/vector.h>
+#include <deal.II/base/index_set.h>
+
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
-#include <ltn/coupling/coupling_system.h>
+#include <ltn/coupling/direct_solver.h>
+
+#include <vector>
 
 namespace ltn
 {
@@ -15,38 +16,47 @@ namespace ltn
   /**
    * One model's own solver, as the reduced-space method sees it: a black box
    * that solves the model's equations for given controls (forward) and the
-   * transposed equations (adjoint). The model's equations split as
-   * `A_ff u_f + A_fc theta = F_f - A_fx g` over free (f), control (c) and
-   * fixed (x) degrees of freedom; `A_ff` is factorized once (UMFPACK).
+   * transposed equations (adjoint). The model's field for controls `theta`
+   * solves `M x = r + S theta` (see DiscreteModel); `M` and `M^T` are
+   * factorized once.
+   *
+   * Controls are numbered `0 .. n_controls - 1` over all ranks, each rank
+   * owning a contiguous range: those of its own control degrees of freedom,
+   * in their order.
    */
   class ModelSolver
   {
   public:
-    ModelSolver(const DiscreteModel &model, const ModelUnknowns &unknowns);
+    /** Factorize the model's matrix, and @p with_adjoint its transpose. */
+    ModelSolver(const DiscreteModel &model, const bool with_adjoint);
+
+    /** A zero vector of controls. */
+    TrilinosWrappers::MPI::Vector
+    new_control_vector() const;
 
     /**
-     * The model's field on all degrees of freedom for controls @p theta;
-     * with @p with_data, the load and fixed data enter, otherwise they are
-     * taken as zero (the linear part of the control-to-state map).
+     * The model's field for controls @p theta; with @p with_data, the load
+     * and fixed data enter, otherwise they are taken as zero (the linear part
+     * of the control-to-state map).
      */
-    Vector<double>
-    forward(const Vector<double> &theta, const bool with_data) const;
+    TrilinosWrappers::MPI::Vector
+    forward(const TrilinosWrappers::MPI::Vector &theta,
+            const bool                           with_data) const;
 
     /**
      * The adjoint of the control-to-state map of forward() (without data):
      * for a gradient @p z with respect to all degrees of freedom, the
-     * gradient with respect to the controls,
-     * `z_c - A_fc^T A_ff^{-T} z_f`.
+     * gradient with respect to the controls, `S^T M^{-T} z`.
      */
-    Vector<double>
-    adjoint(const Vector<double> &z) const;
+    TrilinosWrappers::MPI::Vector
+    adjoint(const TrilinosWrappers::MPI::Vector &z) const;
 
   private:
-    const DiscreteModel &model;
-    const ModelUnknowns &unknowns;
-    SparsityPattern      free_free_sparsity, free_control_sparsity;
-    SparseMatrix<double> free_free, free_control;
-    Vector<double>       data_rhs;
-    SparseDirectUMFPACK  direct;
+    const DiscreteModel                 &model;
+    std::vector<types::global_dof_index> control_dofs;
+    /** The number of this rank's first control. */
+    types::global_dof_index first_control;
+    IndexSet                control_partition;
+    DirectSolver            direct;
   };
 } // namespace ltn

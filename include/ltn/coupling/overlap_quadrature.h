@@ -28,6 +28,9 @@ namespace ltn
    * field at point `q`. With particles, `E_q` picks a particle and `w_q` is
    * its volume; in 1D FEM-FEM the points are Gauss points of the common
    * refinement of both meshes, so `J_h` is the exact L2 mismatch.
+   *
+   * Each rank holds its own points, and the rows refer to the models'
+   * global numbering.
    */
   template <int dim>
   struct OverlapQuadrature
@@ -61,7 +64,9 @@ namespace ltn
    * The particle overlap quadrature: one point per particle of `Omega_b`
    * (the control particles, and the particles of `Omega_n` in `Omega_l`),
    * with the particle's volume as weight; `E_q` picks the particle and `P_q`
-   * evaluates the local finite element field at its position.
+   * evaluates the local finite element field at its position. Each rank
+   * holds the points in its locally owned cells of the local mesh (which
+   * must be Cartesian).
    */
   template <int dim>
   OverlapQuadrature<dim>

@@ -10,13 +10,14 @@
 #include <deal.II/grid/tria.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
 #include <ltn/scene/geometry.h>
 
 #include <functional>
+#include <memory>
 #include <set>
-#include <vector>
 
 namespace ltn
 {
@@ -36,6 +37,10 @@ namespace ltn
    * `u_j - sum_k c_jk u_k = 0`, while the equations of the other degrees of
    * freedom are condensed; so the solution is conforming and the coupling
    * evaluates it with the ordinary shape functions.
+   *
+   * In 2D and 3D the mesh is a parallel::distributed::Triangulation over
+   * the given communicator; in 1D (which p4est does not have) it is serial,
+   * and the communicator must have one rank.
    */
   template <int dim>
   class PoissonProblem
@@ -60,7 +65,8 @@ namespace ltn
 
     PoissonProblem(const Geometry<dim> &geometry,
                    const Parameters    &parameters,
-                   const double         h);
+                   const double         h,
+                   const MPI_Comm       communicator);
 
     /**
      * Assemble the stiffness matrix and the load vector of @p rhs and of the
@@ -75,12 +81,12 @@ namespace ltn
 
     /**
      * Refine the cells with the largest Kelly error indicators of
-     * @p solution (a `refinement fraction` of them), except those for which
-     * @p may_refine (given the cell's centre and size) says no, and set up
-     * the degrees of freedom anew; assemble() must follow.
+     * @p solution (a `refinement fraction` of them, over all ranks), except
+     * those for which @p may_refine (given the cell's centre and size) says
+     * no, and set up the degrees of freedom anew; assemble() must follow.
      */
     void
-    refine(const Vector<double>                                  &solution,
+    refine(const TrilinosWrappers::MPI::Vector                   &solution,
            const std::function<bool(const Point<dim> &, double)> &may_refine);
 
     const DoFHandler<dim> &
@@ -89,22 +95,18 @@ namespace ltn
     const DiscreteModel &
     get_model() const;
 
-    /** The support point of each degree of freedom. */
-    const std::vector<Point<dim>> &
-    get_support_points() const;
-
   private:
     /** Distribute degrees of freedom, support points, hanging nodes. */
     void
     setup_dofs();
 
-    const Geometry<dim>      &geometry;
-    const Parameters         &parameters;
-    Triangulation<dim>        triangulation;
-    FE_Q<dim>                 fe;
-    DoFHandler<dim>           dof_handler;
-    std::vector<Point<dim>>   support_points;
-    AffineConstraints<double> hanging_nodes;
-    DiscreteModel             model;
+    const Geometry<dim>                      &geometry;
+    const Parameters                         &parameters;
+    const MPI_Comm                            communicator;
+    const std::unique_ptr<Triangulation<dim>> triangulation;
+    FE_Q<dim>                                 fe;
+    DoFHandler<dim>                           dof_handler;
+    AffineConstraints<double>                 hanging_nodes;
+    DiscreteModel                             model;
   };
 } // namespace ltn

@@ -37,6 +37,9 @@ namespace ltn
    * vanishes like `xi^2`), exactly; by Gauss-Legendre elsewhere, exactly for
    * the constant kernel and to round-off for the others (there a piece
    * `[l, r]` has `r <= 2 l`). See doc/discretization.md.
+   *
+   * The model is serial (on MPI_COMM_SELF): under MPI every rank holds and
+   * solves all of it.
    */
   class NonlocalWeakForm1D
   {
@@ -63,9 +66,9 @@ namespace ltn
     const DiscreteModel &
     get_model() const;
 
-    /** The region tag of each degree of freedom (by its support point). */
-    std::vector<Region>
-    dof_regions() const;
+    /** The region tag of a point of the mesh. */
+    Region
+    region_of(const Point<1> &p) const;
 
     /** The support point of each degree of freedom. */
     const std::vector<Point<1>> &
@@ -73,7 +76,8 @@ namespace ltn
 
     /** The error of @p field against @p exact over `Omega_n`. */
     ErrorNorms
-    errors(const Vector<double> &field, const Function<1> &exact) const;
+    errors(const TrilinosWrappers::MPI::Vector &field,
+           const Function<1>                   &exact) const;
 
   private:
     void

@@ -1,15 +1,16 @@
 #pragma once
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
 #include <ltn/base/discrete_model.h>
 #include <ltn/base/field_errors.h>
 #include <ltn/nonlocal/kernel.h>
 #include <ltn/nonlocal/lattice_stencil.h>
+#include <ltn/nonlocal/particle_lattice.h>
 #include <ltn/scene/geometry.h>
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -20,8 +21,8 @@ namespace ltn
   /**
    * Nonlocal diffusion in 2D and 3D in strong form on particles: the centres
    * of a lattice of spacing `h` that fills `Omega_n`, plus the particles of
-   * its collar that some particle of `Omega_n` reaches. Each particle of
-   * `Omega_n` satisfies
+   * its collar that some particle of `Omega_n` reaches (ParticleLattice).
+   * Each particle of `Omega_n` satisfies
    *
    *   -L_h u(x_i) = 2 sum_j a_j (u(x_i) - u(x_i + xi_j)) = f(x_i)
    *
@@ -29,14 +30,21 @@ namespace ltn
    * because the collar makes every neighbourhood complete. Collar particles
    * outside the body carry the volume constraint `u = g` (fixed); those
    * inside carry the control `theta_n`.
+   *
+   * Each rank owns a contiguous range of particle numbers (a slab of the
+   * lattice) and reads its ghosts: the particles its rows reach, out to the
+   * full horizon.
    */
   template <int dim>
   class ParticleDiffusion
   {
   public:
+    using LatticeIndex = typename ParticleLattice<dim>::LatticeIndex;
+
     ParticleDiffusion(const Geometry<dim> &geometry,
                       const Kernel        &kernel,
-                      const double         spacing);
+                      const double         spacing,
+                      const MPI_Comm       communicator);
 
     /** Assemble `-L_h`, the load @p rhs and the volume constraint. */
     void
@@ -45,32 +53,39 @@ namespace ltn
     const DiscreteModel &
     get_model() const;
 
-    const std::vector<Point<dim>> &
-    get_positions() const;
+    const ParticleLattice<dim> &
+    get_lattice() const;
+
+    /** The role of the particle at @p index. */
+    DofRole
+    role(const LatticeIndex &index) const;
 
     /** The volume `h^dim` of every particle. */
     double
     particle_volume() const;
 
-    /** The region tag of every particle. */
+    /** The positions of this rank's particles, in their order. */
+    std::vector<Point<dim>>
+    owned_positions() const;
+
+    /** The region tags of this rank's particles. */
     std::vector<Region>
-    regions() const;
+    owned_regions() const;
 
     /**
-     * Errors of @p field against @p exact over the particles of `Omega_n`:
-     * `l2^2 = sum_i h^dim e_i^2`, `linf = max_i |e_i|`.
+     * Errors of @p field against @p exact over the particles of `Omega_n`
+     * on all ranks: `l2^2 = sum_i h^dim e_i^2`, `linf = max_i |e_i|`.
      */
     ErrorNorms
-    errors(const Vector<double> &field, const Function<dim> &exact) const;
+    errors(const TrilinosWrappers::MPI::Vector &field,
+           const Function<dim>                 &exact) const;
 
   private:
-    const Geometry<dim>      &geometry;
-    const Kernel              kernel;
-    const double              spacing;
-    const LatticeStencil<dim> stencil;
-    std::vector<Point<dim>>   positions;
-    /** Lattice index of each particle, relative to Omega_n's first cell. */
-    std::vector<std::array<int, dim>> indices;
-    DiscreteModel                     model;
+    const Geometry<dim>       &geometry;
+    const Kernel               kernel;
+    const double               spacing;
+    const LatticeStencil<dim>  stencil;
+    const ParticleLattice<dim> lattice;
+    DiscreteModel              model;
   };
 } // namespace ltn

@@ -4,10 +4,11 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
-#include <deal.II/lac/vector.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/scene/geometry.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,22 +18,26 @@ namespace ltn
   using namespace dealii;
 
   /**
-   * Write a finite element field to VTU with the fields a user looks at in
-   * ParaView: `u`, and when an exact solution is given `u_exact` and the
-   * pointwise `error = u - u_exact` (at the nodes), plus the `region` tag of
-   * each node (see Region).
+   * Write a distributed finite element field as `directory/name.pvtu` (see
+   * write_parallel_vtu()) with the fields a user looks at in ParaView: `u`,
+   * and when an exact solution is given `u_exact` and the pointwise
+   * `error = u - u_exact` (at the nodes), plus the `region` tag of each node
+   * (see Region), which @p region_of gives for a node's position. @p field
+   * holds the values of the locally relevant degrees of freedom. Return the
+   * name of the `.pvtu` record.
    */
   template <int dim>
-  void
-  write_field_vtu(const DoFHandler<dim>     &dof_handler,
-                  const Vector<double>      &field,
-                  const Function<dim>       *exact_solution,
-                  const std::vector<Region> &regions,
-                  const std::string         &filename);
+  std::string
+  write_field_vtu(const DoFHandler<dim>               &dof_handler,
+                  const TrilinosWrappers::MPI::Vector &field,
+                  const Function<dim>                 *exact_solution,
+                  const std::function<Region(const Point<dim> &)> &region_of,
+                  const std::string                               &directory,
+                  const std::string                               &name);
 
   /**
    * Write a ParaView collection that lists one file per refinement level
-   * (the level is the "time" of each entry).
+   * (the level is the "time" of each entry), on the first rank only.
    */
   void
   write_level_collection(

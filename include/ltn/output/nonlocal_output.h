@@ -2,7 +2,7 @@
 
 #include <deal.II/base/function.h>
 
-#include <deal.II/lac/vector.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
 #include <ltn/nonlocal/particle_diffusion.h>
@@ -12,20 +12,23 @@
 namespace ltn
 {
   /**
-   * Write the nonlocal field to VTU with `u`, and with an exact solution
-   * `u_exact` and `error`, plus the `region` tag: on the 1D finite element
-   * mesh, or on the particles.
+   * Write the nonlocal field as `directory/name.pvtu` (see
+   * write_parallel_vtu()) with `u`, and with an exact solution `u_exact` and
+   * `error`, plus the `region` tag: on the 1D finite element mesh, or on the
+   * particles, each rank its own. Return the name of the `.pvtu` record.
    */
-  void
-  write_nonlocal_vtu(const NonlocalWeakForm1D &nonlocal,
-                     const Vector<double>     &field,
-                     const Function<1>        *exact,
-                     const std::string        &filename);
+  std::string
+  write_nonlocal_vtu(const NonlocalWeakForm1D            &nonlocal,
+                     const TrilinosWrappers::MPI::Vector &field,
+                     const Function<1>                   *exact,
+                     const std::string                   &directory,
+                     const std::string                   &name);
 
   template <int dim>
-  void
-  write_nonlocal_vtu(const ParticleDiffusion<dim> &nonlocal,
-                     const Vector<double>         &field,
-                     const Function<dim>          *exact,
-                     const std::string            &filename);
+  std::string
+  write_nonlocal_vtu(const ParticleDiffusion<dim>        &nonlocal,
+                     const TrilinosWrappers::MPI::Vector &field,
+                     const Function<dim>                 *exact,
+                     const std::string                   &directory,
+                     const std::string                   &name);
 } // namespace ltn

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/mpi.h>
+
+#include <string>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * Write the patches of @p data that this rank holds to
+   * `directory/name.RRRR.vtu` (RRRR the rank), and on the first rank the
+   * record `directory/name.pvtu` that ParaView opens to see all pieces.
+   * Return the record's file name, `name.pvtu`.
+   *
+   * A model held whole by every rank (1D, on MPI_COMM_SELF) is written once,
+   * by the first rank of MPI_COMM_WORLD.
+   */
+  template <int dim, int spacedim>
+  std::string
+  write_parallel_vtu(const DataOutInterface<dim, spacedim> &data,
+                     const std::string                     &directory,
+                     const std::string                     &name,
+                     const MPI_Comm                         communicator);
+} // namespace ltn
