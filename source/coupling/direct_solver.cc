@@ -10,6 +10,9 @@
 #include <Epetra_LinearProblem.h>
 #include <Teuchos_ParameterList.hpp>
 
+#include <iostream>
+#include <sstream>
+
 namespace ltn
 {
   struct DirectSolver::Factorization
@@ -46,14 +49,24 @@ namespace ltn
               // against 7.6 s in all).
               mumps->SetICNTL(7, 6);
             }
-          AssertThrow(solver->SymbolicFactorization() == 0,
-                      ExcMessage("the symbolic factorization failed"));
-          if (solver->NumericFactorization() == 0)
+          // Amesos reports MUMPS's errors on std::cerr: keep them for our
+          // message rather than print those of attempts that are retried.
+          std::ostringstream    report;
+          std::streambuf *const cerr_buffer = std::cerr.rdbuf(report.rdbuf());
+          const int             symbolic    = solver->SymbolicFactorization();
+          const int             numeric =
+            symbolic == 0 ? solver->NumericFactorization() : 0;
+          std::cerr.rdbuf(cerr_buffer);
+          AssertThrow(symbolic == 0,
+                      ExcMessage("the symbolic factorization failed: " +
+                                 report.str()));
+          if (numeric == 0)
             return;
           AssertThrow(mumps != nullptr && mumps->GetINFOG()[0] == -9 &&
                         extra_workspace < 1600,
                       ExcMessage("the matrix is singular: the numeric "
-                                 "factorization failed"));
+                                 "factorization failed: " +
+                                 report.str()));
         }
     }
 
