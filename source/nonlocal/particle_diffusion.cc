@@ -68,21 +68,17 @@ namespace ltn
         }
     };
 
+    // One pass for the pattern of the owned rows and the ghosts they reach.
+    DynamicSparsityPattern dsp(n, n, model.owned);
     model.relevant = model.owned;
-    for (const auto i : model.owned)
-      {
-        make_row(i);
-        model.relevant.add_indices(columns.begin(), columns.end());
-      }
-    model.relevant.compress();
-
-    DynamicSparsityPattern dsp(n, n, model.relevant);
     for (const auto i : model.owned)
       {
         make_row(i);
         std::sort(columns.begin(), columns.end());
         dsp.add_entries(i, columns.begin(), columns.end(), true);
+        model.relevant.add_indices(columns.begin(), columns.end());
       }
+    model.relevant.compress();
     model.matrix.reinit(model.owned, model.owned, dsp, model.communicator);
     model.rhs = model.new_vector();
 
