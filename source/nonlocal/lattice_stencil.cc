@@ -128,19 +128,23 @@ namespace ltn
 
 
   template <int dim>
-  LatticeStencil<dim>::LatticeStencil(const Kernel &kernel,
-                                      const double  spacing)
+  void
+  kernel_weighted_cell_volumes(const Kernel                      &kernel,
+                               const double                       spacing,
+                               std::vector<std::array<int, dim>> &offsets,
+                               std::vector<double>               &volumes)
   {
     const double eps = kernel.horizon();
     const double h   = spacing;
     // Cells that the ball reaches: |o_d| <= eps / h + 1/2.
-    stencil_radius = static_cast<int>(std::floor(eps / h + 0.5));
+    const int          radius = static_cast<int>(std::floor(eps / h + 0.5));
     const QGauss<dim>  rule(3);
     const unsigned int max_depth = (dim == 1) ? 30 : (dim == 2 ? 9 : 5);
 
-    std::vector<double>  base;
+    offsets.clear();
+    volumes.clear();
     std::array<int, dim> o{};
-    const int            n       = 2 * stencil_radius + 1;
+    const int            n       = 2 * radius + 1;
     const unsigned int   n_cells = std::pow(n, dim);
     for (unsigned int index = 0; index < n_cells; ++index)
       {
@@ -149,24 +153,37 @@ namespace ltn
         Point<dim>   lower, upper;
         for (unsigned int d = 0; d < dim; ++d)
           {
-            o[d] = static_cast<int>(rest % n) - stencil_radius;
+            o[d] = static_cast<int>(rest % n) - radius;
             rest /= n;
             zero &= (o[d] == 0);
             lower[d] = (o[d] - 0.5) * h;
             upper[d] = (o[d] + 0.5) * h;
           }
-        // The particle's own cell has u(x_j) - u(x_i) = 0: it carries no
-        // coefficient; the moment correction accounts for its integral.
+        // The particle's own cell has no bond; quadratures built on these
+        // volumes account for its integral through their moments.
         if (zero)
           continue;
         const double a =
           cut_cell_integral(kernel, lower, upper, 0, max_depth, rule);
         if (a > 0)
           {
-            stencil_offsets.push_back(o);
-            base.push_back(a);
+            offsets.push_back(o);
+            volumes.push_back(a);
           }
       }
+  }
+
+
+
+  template <int dim>
+  LatticeStencil<dim>::LatticeStencil(const Kernel &kernel,
+                                      const double  spacing)
+  {
+    const double eps = kernel.horizon();
+    const double h   = spacing;
+    stencil_radius   = static_cast<int>(std::floor(eps / h + 0.5));
+    std::vector<double> base;
+    kernel_weighted_cell_volumes<dim>(kernel, spacing, stencil_offsets, base);
 
     // Correct the moments, degree 4 if the stencil allows, else degree 2.
     const unsigned int n_points = base.size();
@@ -245,6 +262,21 @@ namespace ltn
     return degree;
   }
 
+  template void
+  kernel_weighted_cell_volumes<1>(const Kernel &,
+                                  double,
+                                  std::vector<std::array<int, 1>> &,
+                                  std::vector<double> &);
+  template void
+  kernel_weighted_cell_volumes<2>(const Kernel &,
+                                  double,
+                                  std::vector<std::array<int, 2>> &,
+                                  std::vector<double> &);
+  template void
+  kernel_weighted_cell_volumes<3>(const Kernel &,
+                                  double,
+                                  std::vector<std::array<int, 3>> &,
+                                  std::vector<double> &);
   template class LatticeStencil<1>;
   template class LatticeStencil<2>;
   template class LatticeStencil<3>;

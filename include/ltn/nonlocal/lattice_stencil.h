@@ -8,6 +8,21 @@
 namespace ltn
 {
   /**
+   * The cells of a square (cubic) lattice of spacing @p spacing, centred at
+   * `h o` for integer offsets `o != 0`, that the ball `B_eps(0)` of the
+   * kernel's horizon reaches, and the kernel integrated over each cell's
+   * part inside the ball, `int_{B_eps ∩ cell} gamma(|y|) dy` (positive):
+   * kernel-weighted partial volumes, by recursive subdivision of the cells
+   * the sphere cuts. The base of every lattice quadrature of LtN.
+   */
+  template <int dim>
+  void
+  kernel_weighted_cell_volumes(const Kernel                      &kernel,
+                               const double                       spacing,
+                               std::vector<std::array<int, dim>> &offsets,
+                               std::vector<double>               &volumes);
+
+  /**
    * The stencil of nonlocal diffusion on a square (cubic) lattice of spacing
    * `h`: offsets `xi_j = h o_j` (integer vectors `o_j != 0`) and coefficients
    * `a_j`, so that at a particle `x_i` whose whole neighbourhood is present

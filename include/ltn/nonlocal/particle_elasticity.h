@@ -1,0 +1,148 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+
+#include <ltn/base/discrete_model.h>
+#include <ltn/base/field_errors.h>
+#include <ltn/nonlocal/kernel.h>
+#include <ltn/nonlocal/particle_lattice.h>
+#include <ltn/nonlocal/peridynamic_stencil.h>
+#include <ltn/scene/crack.h>
+#include <ltn/scene/geometry.h>
+
+#include <vector>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * Linearized state-based peridynamics (LPS) in 2D and 3D in strong form on
+   * particles: the centres of a lattice of spacing `h` filling `Omega_n`,
+   * plus a collar two horizons deep (the operator at a particle reads the
+   * dilatations of its neighbours, each of which needs its own complete
+   * neighbourhood). With the bonds `(xi_j, c_j)` of the PeridynamicStencil,
+   * bonds that cross a crack removed, and per particle the weighted volume
+   * `m_i = sum_{j intact} c_j |xi_j|^2`, a particle `x_i` of `Omega_n`
+   * satisfies
+   *
+   *   -sum_{j intact} c_j [ A (theta_i/m_i + theta_j/m_j) xi
+   *       + B (1/m_i + 1/m_j) (xi (x) xi)/|xi|^2 (u_j - u_i) ] = b(x_i),
+   *   theta_i = dim/m_i sum_{j intact} c_j xi . (u_j - u_i),
+   *
+   * with `A = dim (lambda - mu)`, `B = dim (dim + 2) mu` from the Lamé
+   * constants of the dimension (doc/discretization.md, section 14).
+   *
+   * The dilatation is an unknown of its own: each particle carries `dim`
+   * displacement components and `theta` (degree of freedom
+   * `(dim + 1) n + c`). This keeps the matrix to one horizon of neighbours
+   * per row instead of two. The dilatation's equation holds at every
+   * particle with a complete neighbourhood (`Omega_n` and the inner collar);
+   * elsewhere `theta` is fixed to zero, unused. Displacements of collar
+   * particles outside the body carry the volume constraint `u = g`, those
+   * inside the control `theta_n`.
+   *
+   * Each rank owns a contiguous range of particles (a slab of the lattice)
+   * with all their degrees of freedom.
+   */
+  template <int dim>
+  class ParticleElasticity
+  {
+  public:
+    using LatticeIndex = typename ParticleLattice<dim>::LatticeIndex;
+
+    /** Degrees of freedom per particle: the displacement and `theta`. */
+    static constexpr unsigned int n_components = dim + 1;
+
+    ParticleElasticity(const Geometry<dim>           &geometry,
+                       const Kernel                  &influence,
+                       const double                   spacing,
+                       const double                   lambda,
+                       const double                   mu,
+                       const std::vector<Crack<dim>> &cracks,
+                       const MPI_Comm                 communicator);
+
+    /**
+     * Assemble the model with the body force @p body_force and the volume
+     * constraint @p volume_data (both `dim` components).
+     */
+    void
+    assemble(const Function<dim> &body_force, const Function<dim> &volume_data);
+
+    const DiscreteModel &
+    get_model() const;
+
+    const ParticleLattice<dim> &
+    get_lattice() const;
+
+    /** The degree of freedom of component @p c of particle @p number. */
+    static types::global_dof_index
+    dof(const types::global_dof_index number, const unsigned int c);
+
+    /** The field components the coupling compares: the displacement. */
+    static constexpr unsigned int n_field_components = dim;
+
+    /** The role of the displacement of the particle at @p index. */
+    DofRole
+    role(const LatticeIndex &index) const;
+
+    /** The volume `h^dim` of every particle. */
+    double
+    particle_volume() const;
+
+    double
+    horizon() const;
+
+    /**
+     * Which bonds of the particle at @p index are intact (not cut by a
+     * crack, and reaching a particle of the lattice); return the particle's
+     * weighted volume over them.
+     */
+    double
+    intact_bonds(const LatticeIndex &index, std::vector<bool> &intact) const;
+
+    /** The positions of this rank's particles, in their order. */
+    std::vector<Point<dim>>
+    owned_positions() const;
+
+    /** The region tags of this rank's particles. */
+    std::vector<Region>
+    owned_regions() const;
+
+    /** Per particle of this rank: the fraction of its bonds cracks cut. */
+    std::vector<double>
+    owned_broken_bond_fractions() const;
+
+    /**
+     * Errors of the displacement in @p field against @p exact (`dim`
+     * components) over the particles of `Omega_n` on all ranks:
+     * `l2^2 = sum_i h^dim |e_i|^2`, `linf = max_{i,c} |e_ic|`.
+     */
+    ErrorNorms
+    errors(const TrilinosWrappers::MPI::Vector &field,
+           const Function<dim>                 &exact) const;
+
+  private:
+    /** Is @p x close enough to a crack for one of its bonds to cross it? */
+    bool
+    near_crack(const Point<dim> &x) const;
+
+    /** Is the bond from @p x to @p y cut by a crack? */
+    bool
+    is_cut(const Point<dim> &x, const Point<dim> &y) const;
+
+    const Geometry<dim>          &geometry;
+    const double                  spacing;
+    const double                  eps;
+    const double                  coefficient_A;
+    const double                  coefficient_B;
+    const std::vector<Crack<dim>> cracks;
+    const PeridynamicStencil<dim> stencil;
+    const ParticleLattice<dim>    lattice;
+    /** The cracks' boxes widened by the horizon: where bonds can be cut. */
+    std::vector<Box<dim>> crack_neighbourhoods;
+    IndexSet              owned_particles;
+    DiscreteModel         model;
+  };
+} // namespace ltn

@@ -1,0 +1,408 @@
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <ltn/base/partition.h>
+#include <ltn/nonlocal/particle_elasticity.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace ltn
+{
+  template <int dim>
+  ParticleElasticity<dim>::ParticleElasticity(
+    const Geometry<dim>           &geometry,
+    const Kernel                  &influence,
+    const double                   spacing,
+    const double                   lambda,
+    const double                   mu,
+    const std::vector<Crack<dim>> &cracks,
+    const MPI_Comm                 communicator)
+    : geometry(geometry)
+    , spacing(spacing)
+    , eps(influence.horizon())
+    , coefficient_A(dim * (lambda - mu))
+    , coefficient_B(dim * (dim + 2) * mu)
+    , cracks(cracks)
+    , stencil(influence, spacing)
+    , lattice(geometry.nonlocal_region, spacing, stencil.two_bond_reach())
+  {
+    for (const auto &crack : cracks)
+      {
+        Box<dim> box = crack.bounding_box();
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            box.lower[d] -= eps + spacing;
+            box.upper[d] += eps + spacing;
+          }
+        crack_neighbourhoods.push_back(box);
+      }
+
+    owned_particles = even_partition(lattice.n_particles(), communicator);
+    const types::global_dof_index n_dofs = n_components * lattice.n_particles();
+    model.communicator                   = communicator;
+    model.owned                          = IndexSet(n_dofs);
+    if (owned_particles.n_elements() > 0)
+      model.owned.add_range(dof(*owned_particles.begin(), 0),
+                            dof(owned_particles.nth_index_in_set(
+                                  owned_particles.n_elements() - 1),
+                                n_components));
+    model.controls = IndexSet(n_dofs);
+    model.fixed    = IndexSet(n_dofs);
+    std::vector<bool> intact;
+    for (const auto n : owned_particles)
+      {
+        const LatticeIndex index = lattice.index(n);
+        const DofRole      r     = role(index);
+        for (unsigned int c = 0; c < dim; ++c)
+          if (r == DofRole::control)
+            model.controls.add_index(dof(n, c));
+          else if (r == DofRole::fixed)
+            model.fixed.add_index(dof(n, c));
+        // The dilatation is an unknown only where its sum is complete.
+        bool complete = true;
+        for (const auto &o : stencil.offsets())
+          {
+            LatticeIndex neighbour = index;
+            for (unsigned int d = 0; d < dim; ++d)
+              neighbour[d] += o[d];
+            complete = complete && lattice.number(neighbour) !=
+                                     ParticleLattice<dim>::invalid;
+          }
+        if (!complete)
+          model.fixed.add_index(dof(n, dim));
+      }
+    model.controls.compress();
+    model.fixed.compress();
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  ParticleElasticity<dim>::dof(const types::global_dof_index number,
+                               const unsigned int            c)
+  {
+    return n_components * number + c;
+  }
+
+
+
+  template <int dim>
+  bool
+  ParticleElasticity<dim>::is_cut(const Point<dim> &x,
+                                  const Point<dim> &y) const
+  {
+    const double tol = geometry.tolerance();
+    for (std::size_t k = 0; k < cracks.size(); ++k)
+      if (cracks[k].cuts(x, y, tol))
+        return true;
+    return false;
+  }
+
+
+
+  template <int dim>
+  bool
+  ParticleElasticity<dim>::near_crack(const Point<dim> &x) const
+  {
+    for (const auto &box : crack_neighbourhoods)
+      if (box.contains(x))
+        return true;
+    return false;
+  }
+
+
+
+  template <int dim>
+  double
+  ParticleElasticity<dim>::intact_bonds(const LatticeIndex &index,
+                                        std::vector<bool>  &intact) const
+  {
+    const auto      &offsets = stencil.offsets();
+    const auto      &weights = stencil.weights();
+    const auto      &bonds   = stencil.bonds();
+    const Point<dim> x       = lattice.position(index);
+    const bool       near    = near_crack(x);
+    intact.assign(offsets.size(), true);
+    double m = 0;
+    for (std::size_t k = 0; k < offsets.size(); ++k)
+      {
+        LatticeIndex neighbour = index;
+        for (unsigned int d = 0; d < dim; ++d)
+          neighbour[d] += offsets[k][d];
+        intact[k] =
+          lattice.number(neighbour) != ParticleLattice<dim>::invalid &&
+          !(near && is_cut(x, x + bonds[k]));
+        if (intact[k])
+          m += weights[k] * bonds[k].norm_square();
+      }
+    return m;
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleElasticity<dim>::assemble(const Function<dim> &body_force,
+                                    const Function<dim> &volume_data)
+  {
+    const auto &offsets = stencil.offsets();
+    const auto &weights = stencil.weights();
+    const auto &bonds   = stencil.bonds();
+    const auto  n_dofs  = model.owned.size();
+    // The dilatation's rows are scaled to the size of the displacement's.
+    const double theta_scale = coefficient_B / dim;
+
+    // The rows of particle n: entries (column, value) per component.
+    std::array<std::vector<std::pair<types::global_dof_index, double>>,
+               n_components>
+                      rows;
+    std::vector<bool> intact, neighbour_intact;
+    const auto        make_rows = [&](const types::global_dof_index n) {
+      for (auto &row : rows)
+        row.clear();
+      const LatticeIndex index = lattice.index(n);
+      const bool         fixed_theta = model.fixed.is_element(dof(n, dim));
+      const bool         free_u = lattice.inside(index);
+      for (unsigned int c = 0; c < dim; ++c)
+        if (!free_u)
+          rows[c].emplace_back(dof(n, c), 1.);
+      if (fixed_theta)
+        rows[dim].emplace_back(dof(n, dim), 1.);
+      if (!free_u && fixed_theta)
+        return;
+
+      const double m_i = intact_bonds(index, intact);
+      if (!fixed_theta)
+        rows[dim].emplace_back(dof(n, dim), theta_scale);
+      for (std::size_t k = 0; k < offsets.size(); ++k)
+        if (intact[k])
+          {
+            LatticeIndex neighbour = index;
+            for (unsigned int d = 0; d < dim; ++d)
+              neighbour[d] += offsets[k][d];
+            const auto           j  = lattice.number(neighbour);
+            const Tensor<1, dim> xi = bonds[k];
+            if (!fixed_theta)
+              for (unsigned int b = 0; b < dim; ++b)
+                {
+                  const double v = theta_scale * dim * weights[k] * xi[b] / m_i;
+                  rows[dim].emplace_back(dof(j, b), -v);
+                  rows[dim].emplace_back(dof(n, b), v);
+                }
+            if (!free_u)
+              continue;
+            // Neighbours of a particle of Omega_n are complete: away from
+            // cracks their weighted volume is the stencil's.
+            const double m_j = near_crack(lattice.position(neighbour)) ?
+                                        intact_bonds(neighbour, neighbour_intact) :
+                                        stencil.weighted_volume();
+            const double bond_stiffness = weights[k] * coefficient_B *
+                                          (1 / m_i + 1 / m_j) /
+                                          xi.norm_square();
+            for (unsigned int a = 0; a < dim; ++a)
+              {
+                for (unsigned int b = 0; b < dim; ++b)
+                  {
+                    const double v = bond_stiffness * xi[a] * xi[b];
+                    rows[a].emplace_back(dof(n, b), v);
+                    rows[a].emplace_back(dof(j, b), -v);
+                  }
+                rows[a].emplace_back(dof(n, dim),
+                                     -weights[k] * coefficient_A * xi[a] / m_i);
+                rows[a].emplace_back(dof(j, dim),
+                                     -weights[k] * coefficient_A * xi[a] / m_j);
+              }
+          }
+      // One entry per column.
+      for (auto &row : rows)
+        {
+          std::sort(row.begin(), row.end(), [](const auto &x, const auto &y) {
+            return x.first < y.first;
+          });
+          std::size_t last = 0;
+          for (std::size_t e = 1; e < row.size(); ++e)
+            if (row[e].first == row[last].first)
+              row[last].second += row[e].second;
+            else
+              row[++last] = row[e];
+          row.resize(row.empty() ? 0 : last + 1);
+        }
+    };
+
+    // One pass for the pattern of the owned rows and the ghosts they reach.
+    DynamicSparsityPattern               dsp(n_dofs, n_dofs, model.owned);
+    std::vector<types::global_dof_index> columns;
+    model.relevant = model.owned;
+    for (const auto n : owned_particles)
+      {
+        make_rows(n);
+        for (unsigned int c = 0; c < n_components; ++c)
+          {
+            columns.clear();
+            for (const auto &entry : rows[c])
+              columns.push_back(entry.first);
+            dsp.add_entries(dof(n, c), columns.begin(), columns.end(), true);
+            model.relevant.add_indices(columns.begin(), columns.end());
+          }
+      }
+    model.relevant.compress();
+    model.matrix.reinit(model.owned, model.owned, dsp, model.communicator);
+    model.rhs = model.new_vector();
+
+    std::vector<double> values;
+    for (const auto n : owned_particles)
+      {
+        make_rows(n);
+        for (unsigned int c = 0; c < n_components; ++c)
+          {
+            columns.clear();
+            values.clear();
+            for (const auto &entry : rows[c])
+              {
+                columns.push_back(entry.first);
+                values.push_back(entry.second);
+              }
+            model.matrix.set(dof(n, c),
+                             columns.size(),
+                             columns.data(),
+                             values.data());
+          }
+        const Point<dim> x = lattice.position(lattice.index(n));
+        for (unsigned int c = 0; c < dim; ++c)
+          switch (model.role(dof(n, c)))
+            {
+              case DofRole::free:
+                model.rhs(dof(n, c)) = body_force.value(x, c);
+                break;
+              case DofRole::fixed:
+                model.rhs(dof(n, c)) = volume_data.value(x, c);
+                break;
+              case DofRole::control:
+                break;
+            }
+      }
+    model.matrix.compress(VectorOperation::insert);
+    model.rhs.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  const DiscreteModel &
+  ParticleElasticity<dim>::get_model() const
+  {
+    return model;
+  }
+
+
+
+  template <int dim>
+  const ParticleLattice<dim> &
+  ParticleElasticity<dim>::get_lattice() const
+  {
+    return lattice;
+  }
+
+
+
+  template <int dim>
+  DofRole
+  ParticleElasticity<dim>::role(const LatticeIndex &index) const
+  {
+    return lattice.inside(index) ? DofRole::free :
+           geometry.body.contains(lattice.position(index),
+                                  geometry.tolerance()) ?
+                                   DofRole::control :
+                                   DofRole::fixed;
+  }
+
+
+
+  template <int dim>
+  double
+  ParticleElasticity<dim>::particle_volume() const
+  {
+    return std::pow(spacing, dim);
+  }
+
+
+
+  template <int dim>
+  double
+  ParticleElasticity<dim>::horizon() const
+  {
+    return eps;
+  }
+
+
+
+  template <int dim>
+  std::vector<Point<dim>>
+  ParticleElasticity<dim>::owned_positions() const
+  {
+    std::vector<Point<dim>> result;
+    for (const auto n : owned_particles)
+      result.push_back(lattice.position(lattice.index(n)));
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<Region>
+  ParticleElasticity<dim>::owned_regions() const
+  {
+    std::vector<Region> result;
+    for (const auto &x : owned_positions())
+      result.push_back(geometry.nonlocal_region_of(x, 2 * eps));
+    return result;
+  }
+
+
+
+  template <int dim>
+  std::vector<double>
+  ParticleElasticity<dim>::owned_broken_bond_fractions() const
+  {
+    std::vector<double> result;
+    const auto         &bonds = stencil.bonds();
+    for (const auto n : owned_particles)
+      {
+        const Point<dim> x      = lattice.position(lattice.index(n));
+        unsigned int     broken = 0;
+        if (near_crack(x))
+          for (const auto &xi : bonds)
+            broken += is_cut(x, x + xi) ? 1 : 0;
+        result.push_back(static_cast<double>(broken) / bonds.size());
+      }
+    return result;
+  }
+
+
+
+  template <int dim>
+  ErrorNorms
+  ParticleElasticity<dim>::errors(const TrilinosWrappers::MPI::Vector &field,
+                                  const Function<dim> &exact) const
+  {
+    ErrorNorms errors;
+    for (const auto n : owned_particles)
+      {
+        const LatticeIndex index = lattice.index(n);
+        if (!lattice.inside(index))
+          continue;
+        const Point<dim> x = lattice.position(index);
+        for (unsigned int c = 0; c < dim; ++c)
+          {
+            const double e = field(dof(n, c)) - exact.value(x, c);
+            errors.l2_squared += particle_volume() * e * e;
+            errors.add_pointwise(e);
+          }
+      }
+    return errors.over_all_ranks(model.communicator);
+  }
+
+  template class ParticleElasticity<2>;
+  template class ParticleElasticity<3>;
+} // namespace ltn
