@@ -56,7 +56,7 @@ namespace ltn
                       "Space dimension of the scene.");
     Geometry<dim>::declare_parameters(prm);
     NonlocalParameters::declare_parameters(prm);
-    PoissonProblem<dim>::Parameters::declare_parameters(prm);
+    LocalParameters<dim>::declare_parameters(prm);
     ProblemData::declare_parameters(prm);
     Discretization::declare_parameters(prm);
     CouplingParameters::declare_parameters(prm);
@@ -94,6 +94,12 @@ namespace ltn
     output_directory = prm.get("Directory");
     write_vtu        = prm.get_bool("Write VTU");
     prm.leave_subsection();
+
+    check_input(local_parameters.dirichlet_components.empty(),
+                "Local model/Dirichlet components",
+                local_parameters.dirichlet_components_text,
+                "empty in a diffusion scene: only elasticity scenes have "
+                "components");
 
     const double h0 = discretization.mesh_size(0);
     // The largest horizon of the study is on the coarsest level.

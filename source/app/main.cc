@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ltn/app/diffusion_scene.h>
+#include <ltn/app/elasticity_scene.h>
 #include <ltn/app/parameter_reading.h>
 #include <ltn/base/input_error.h>
 #include <ltn/base/memory.h>
@@ -74,17 +75,18 @@ namespace
    * Validate the scene, and only then create its output directory, run it
    * and write the summary.
    */
-  template <int dim>
+  template <class Scene>
   void
   run_scene(dealii::ParameterHandler   &prm,
             const CommandLine          &command_line,
             dealii::ConditionalOStream &pcout)
   {
+    constexpr int dim = Scene::dimension;
     using namespace dealii;
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     const std::string scene_name =
       std::filesystem::path(command_line.scene_file).stem().string();
-    ltn::DiffusionScene<dim> scene(prm, scene_name);
+    Scene scene(prm, scene_name);
 
     std::string output_directory = command_line.output_directory;
     if (output_directory.empty())
@@ -149,17 +151,24 @@ main(int argc, char **argv)
         }
 
       ltn::read_parameters(prm, command_line.scene_file, command_line.sets);
-      switch (prm.get_integer("Dimension"))
+      const int dim = prm.get_integer("Dimension");
+      if (prm.get("Model") == "elasticity")
         {
-          case 1:
-            run_scene<1>(prm, command_line, pcout);
-            break;
-          case 2:
-            run_scene<2>(prm, command_line, pcout);
-            break;
-          default:
-            run_scene<3>(prm, command_line, pcout);
+          ltn::check_input(dim > 1,
+                           "Dimension",
+                           std::to_string(dim),
+                           "2 or 3 for Model = elasticity");
+          if (dim == 2)
+            run_scene<ltn::ElasticityScene<2>>(prm, command_line, pcout);
+          else
+            run_scene<ltn::ElasticityScene<3>>(prm, command_line, pcout);
         }
+      else if (dim == 1)
+        run_scene<ltn::DiffusionScene<1>>(prm, command_line, pcout);
+      else if (dim == 2)
+        run_scene<ltn::DiffusionScene<2>>(prm, command_line, pcout);
+      else
+        run_scene<ltn::DiffusionScene<3>>(prm, command_line, pcout);
     }
   catch (const ltn::InputError &error)
     {

@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <ltn/app/diffusion_scene.h>
+#include <ltn/app/elasticity_scene.h>
 #include <ltn/app/parameter_reading.h>
 #include <ltn/base/input_error.h>
 
@@ -14,7 +15,14 @@ namespace ltn
   declare_all_parameters(ParameterHandler &prm)
   {
     // Declarations do not depend on the dimension.
+    prm.declare_entry("Model",
+                      "diffusion",
+                      Patterns::Selection("diffusion|elasticity"),
+                      "The physics of the scene: `diffusion` (nonlocal "
+                      "diffusion coupled to Poisson) or `elasticity` (LPS "
+                      "peridynamics coupled to Navier-Cauchy, 2D and 3D).");
     DiffusionScene<1>::declare_parameters(prm);
+    ElasticityScene<2>::declare_parameters(prm);
   }
 
 

@@ -58,19 +58,25 @@ namespace ltn
                const Function<dim>                           &exact,
                const std::function<bool(const Point<dim> &)> &in_region)
   {
-    const auto          &fe = dof_handler.get_fe();
-    const QGauss<dim>    l2_rule(fe.degree + 3);
-    const QIterated<dim> max_rule(QTrapezoid<1>(), 4 * fe.degree);
-    FEValues<dim>        l2_values(fe,
+    const auto        &fe           = dof_handler.get_fe();
+    const unsigned int n_components = fe.n_components();
+    AssertThrow(exact.n_components == n_components,
+                ExcDimensionMismatch(exact.n_components, n_components));
+    const QGauss<dim>           l2_rule(fe.degree + 3);
+    const QIterated<dim>        max_rule(QTrapezoid<1>(), 4 * fe.degree);
+    FEValues<dim>               l2_values(fe,
                             l2_rule,
                             update_values | update_quadrature_points |
                               update_JxW_values);
-    FEValues<dim>        max_values(fe,
+    FEValues<dim>               max_values(fe,
                              max_rule,
                              update_values | update_quadrature_points);
-    std::vector<double>  values_at_l2(l2_rule.size()),
-      values_at_max(max_rule.size());
+    std::vector<Vector<double>> values_at_l2(l2_rule.size(),
+                                             Vector<double>(n_components)),
+      values_at_max(max_rule.size(), Vector<double>(n_components));
 
+    // Component by component: |u_h - u|^2 summed for L2, the largest
+    // component for max.
     ErrorNorms errors;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && in_region(cell->center()))
@@ -78,16 +84,19 @@ namespace ltn
           l2_values.reinit(cell);
           l2_values.get_function_values(field, values_at_l2);
           for (unsigned int q = 0; q < l2_rule.size(); ++q)
-            {
-              const double e =
-                values_at_l2[q] - exact.value(l2_values.quadrature_point(q));
-              errors.l2_squared += e * e * l2_values.JxW(q);
-            }
+            for (unsigned int c = 0; c < n_components; ++c)
+              {
+                const double e = values_at_l2[q][c] -
+                                 exact.value(l2_values.quadrature_point(q), c);
+                errors.l2_squared += e * e * l2_values.JxW(q);
+              }
           max_values.reinit(cell);
           max_values.get_function_values(field, values_at_max);
           for (unsigned int q = 0; q < max_rule.size(); ++q)
-            errors.add_pointwise(values_at_max[q] -
-                                 exact.value(max_values.quadrature_point(q)));
+            for (unsigned int c = 0; c < n_components; ++c)
+              errors.add_pointwise(
+                values_at_max[q][c] -
+                exact.value(max_values.quadrature_point(q), c));
         }
     return errors.over_all_ranks(dof_handler.get_communicator());
   }

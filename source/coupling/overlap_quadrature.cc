@@ -106,13 +106,13 @@ namespace ltn
 
 
 
-  template <int dim>
+  template <int dim, template <int> class ParticleModel>
   OverlapQuadrature<dim>
   create_overlap_quadrature(
     const Geometry<dim> &geometry,
     const double /*horizon: the control particles are the collar*/,
-    const ParticleDiffusion<dim> &nonlocal,
-    const DoFHandler<dim>        &local_dofs)
+    const ParticleModel<dim> &nonlocal,
+    const DoFHandler<dim>    &local_dofs)
   {
     const auto                          &lattice = nonlocal.get_lattice();
     const auto                          &fe      = local_dofs.get_fe();
@@ -151,13 +151,21 @@ namespace ltn
               if (role == DofRole::fixed ||
                   (role == DofRole::free && !geometry.in_local_region(x)))
                 return;
-              overlap.points.push_back(x);
-              overlap.weights.push_back(nonlocal.particle_volume());
-              overlap.nonlocal_rows.push_back({{number, 1.}});
-              SparseRow row;
-              for (unsigned int i = 0; i < dofs.size(); ++i)
-                row.emplace_back(dofs[i], fe.shape_value(i, unit));
-              overlap.local_rows.push_back(std::move(row));
+              for (unsigned int c = 0;
+                   c < ParticleModel<dim>::n_field_components;
+                   ++c)
+                {
+                  overlap.points.push_back(x);
+                  overlap.weights.push_back(nonlocal.particle_volume());
+                  overlap.nonlocal_rows.push_back(
+                    {{ParticleModel<dim>::dof(number, c), 1.}});
+                  SparseRow row;
+                  for (unsigned int i = 0; i < dofs.size(); ++i)
+                    if (fe.system_to_component_index(i).first == c)
+                      row.emplace_back(dofs[i],
+                                       fe.shape_value_component(i, unit, c));
+                  overlap.local_rows.push_back(std::move(row));
+                }
             });
         }
     return overlap;
@@ -172,5 +180,15 @@ namespace ltn
   create_overlap_quadrature(const Geometry<3> &,
                             double,
                             const ParticleDiffusion<3> &,
+                            const DoFHandler<3> &);
+  template OverlapQuadrature<2>
+  create_overlap_quadrature(const Geometry<2> &,
+                            double,
+                            const ParticleElasticity<2> &,
+                            const DoFHandler<2> &);
+  template OverlapQuadrature<3>
+  create_overlap_quadrature(const Geometry<3> &,
+                            double,
+                            const ParticleElasticity<3> &,
                             const DoFHandler<3> &);
 } // namespace ltn

@@ -1,6 +1,8 @@
 #include <ltn/base/input_error.h>
 #include <ltn/nonlocal/nonlocal_parameters.h>
 
+#include <cmath>
+
 namespace ltn
 {
   void
@@ -98,6 +100,52 @@ namespace ltn
   {
     return spacing_ratio * h;
   }
+
+
+
+  template <int dim>
+  void
+  NonlocalParameters::validate_particles(const Geometry<dim> &geometry,
+                                         const unsigned int   local_degree,
+                                         const double         h) const
+  {
+    const double spacing = particle_spacing(h);
+    const double eps     = horizon(h);
+    // One particle per nodal spacing of FE_Q(p), or some local control
+    // modes go unobserved in the overlap and the system is singular.
+    check_input(spacing_ratio * local_degree <= 1 + 1e-12,
+                "Nonlocal model/Particle spacing to mesh size ratio",
+                to_string(spacing_ratio),
+                "at most 1/p = " + to_string(1. / local_degree) +
+                  " for FE_Q(p) on the local side, so that the particles "
+                  "of the overlap observe every local control");
+    check_input(spacing <= eps * (1 + 1e-12),
+                "Nonlocal model/Particle spacing to mesh size ratio",
+                to_string(spacing_ratio),
+                "the particle spacing " + to_string(spacing) +
+                  " must not exceed the horizon " + to_string(eps));
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const double n = (geometry.nonlocal_region.upper[d] -
+                          geometry.nonlocal_region.lower[d]) /
+                         spacing;
+        check_input(std::abs(n - std::round(n)) < 1e-8 * n,
+                    "Nonlocal model/Particle spacing to mesh size ratio",
+                    to_string(spacing_ratio),
+                    "the particle spacing " + to_string(spacing) +
+                      " must divide the nonlocal region's extent " +
+                      to_string(n * spacing) + " a whole number of times");
+      }
+  }
+
+  template void
+  NonlocalParameters::validate_particles(const Geometry<2> &,
+                                         unsigned int,
+                                         double) const;
+  template void
+  NonlocalParameters::validate_particles(const Geometry<3> &,
+                                         unsigned int,
+                                         double) const;
 
 
 

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <map>
 
 namespace ltn
 {
@@ -401,6 +403,83 @@ namespace ltn
           }
       }
     return errors.over_all_ranks(model.communicator);
+  }
+
+  template <int dim>
+  typename ParticleElasticity<dim>::CrackOpening
+  ParticleElasticity<dim>::crack_opening(
+    const TrilinosWrappers::MPI::Vector &field,
+    const unsigned int                   k) const
+  {
+    AssertIndexRange(k, cracks.size());
+    const Crack<dim>    &crack = cracks[k];
+    const Tensor<1, dim> n     = crack.normal();
+    const double         tol   = 1e-6 * spacing;
+    // Per particle next to the crack: its point on the crack, its side and
+    // its normal displacement.
+    std::vector<std::array<double, dim + 2>> samples;
+    for (const auto number : owned_particles)
+      {
+        const Point<dim> x = lattice.position(lattice.index(number));
+        const double     s = crack.signed_distance(x);
+        if (std::abs(std::abs(s) - spacing / 2) > tol)
+          continue;
+        const Point<dim> on_crack = x - s * n;
+        bool             inside   = true;
+        for (const double t : crack.edge_coordinates(on_crack))
+          inside = inside && t > -tol && t < 1 + tol;
+        if (!inside)
+          continue;
+        std::array<double, dim + 2> sample;
+        for (unsigned int d = 0; d < dim; ++d)
+          sample[d] = on_crack[d];
+        double normal_displacement = 0;
+        for (unsigned int d = 0; d < dim; ++d)
+          normal_displacement += n[d] * field(dof(number, d));
+        sample[dim]     = s > 0 ? 1 : -1;
+        sample[dim + 1] = normal_displacement;
+        samples.push_back(sample);
+      }
+    std::vector<std::array<double, dim + 2>> all;
+    for (const auto &part :
+         Utilities::MPI::all_gather(model.communicator, samples))
+      all.insert(all.end(), part.begin(), part.end());
+
+    // Pair the two sides by their point on the crack, ordered along it.
+    const auto key = [&](const std::array<double, dim + 2> &sample) {
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = sample[d];
+      std::vector<long> rounded;
+      for (const double t : crack.edge_coordinates(p))
+        rounded.push_back(std::lround(t * 1e6));
+      return rounded;
+    };
+    std::map<std::vector<long>, std::array<double, 2>> sides;
+    std::map<std::vector<long>, Point<dim>>            points;
+    for (const auto &sample : all)
+      {
+        const auto k_sample = key(sample);
+        auto      &entry    = sides
+                        .emplace(k_sample,
+                                 std::array<double, 2>{
+                                   {std::numeric_limits<double>::quiet_NaN(),
+                                    std::numeric_limits<double>::quiet_NaN()}})
+                        .first->second;
+        entry[sample[dim] > 0 ? 0 : 1] = sample[dim + 1];
+        Point<dim> p;
+        for (unsigned int d = 0; d < dim; ++d)
+          p[d] = sample[d];
+        points[k_sample] = p;
+      }
+    CrackOpening result;
+    for (const auto &[k_pair, values] : sides)
+      if (!std::isnan(values[0]) && !std::isnan(values[1]))
+        {
+          result.points.push_back(points[k_pair]);
+          result.opening.push_back(values[0] - values[1]);
+        }
+    return result;
   }
 
   template class ParticleElasticity<2>;

@@ -59,6 +59,69 @@ namespace ltn
                               nonlocal.get_model().communicator);
   }
 
+  template <int dim>
+  std::string
+  write_nonlocal_vtu(const ParticleElasticity<dim>       &nonlocal,
+                     const TrilinosWrappers::MPI::Vector &field,
+                     const Function<dim>                 *exact,
+                     const std::string                   &directory,
+                     const std::string                   &name)
+  {
+    using Particles                       = ParticleElasticity<dim>;
+    const auto                  positions = nonlocal.owned_positions();
+    const auto                  first     = positions.empty() ?
+                                              0 :
+                                              nonlocal.get_model().owned.nth_index_in_set(0) /
+                           Particles::n_components;
+    std::vector<Tensor<1, dim>> displacement(positions.size());
+    std::vector<double>         dilatation(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i)
+      {
+        for (unsigned int c = 0; c < dim; ++c)
+          displacement[i][c] = field(Particles::dof(first + i, c));
+        dilatation[i] = field(Particles::dof(first + i, dim));
+      }
+    std::vector<std::pair<std::string, std::vector<Tensor<1, dim>>>> vectors;
+    vectors.emplace_back("displacement", displacement);
+    if (exact != nullptr)
+      {
+        std::vector<Tensor<1, dim>> exact_values(positions.size()), error;
+        for (std::size_t i = 0; i < positions.size(); ++i)
+          {
+            for (unsigned int c = 0; c < dim; ++c)
+              exact_values[i][c] = exact->value(positions[i], c);
+            error.push_back(displacement[i] - exact_values[i]);
+          }
+        vectors.emplace_back("displacement_exact", exact_values);
+        vectors.emplace_back("error", error);
+      }
+    std::vector<double> tags;
+    for (const Region r : nonlocal.owned_regions())
+      tags.push_back(static_cast<double>(r));
+    const std::vector<std::pair<std::string, std::vector<double>>> scalars = {
+      {"dilatation", dilatation},
+      {"broken_bond_fraction", nonlocal.owned_broken_bond_fractions()},
+      {"region", tags}};
+    return write_parallel_vtu(PointCloudOutput<dim>(positions,
+                                                    scalars,
+                                                    vectors),
+                              directory,
+                              name,
+                              nonlocal.get_model().communicator);
+  }
+
+  template std::string
+  write_nonlocal_vtu(const ParticleElasticity<2> &,
+                     const TrilinosWrappers::MPI::Vector &,
+                     const Function<2> *,
+                     const std::string &,
+                     const std::string &);
+  template std::string
+  write_nonlocal_vtu(const ParticleElasticity<3> &,
+                     const TrilinosWrappers::MPI::Vector &,
+                     const Function<3> *,
+                     const std::string &,
+                     const std::string &);
   template std::string
   write_nonlocal_vtu(const ParticleDiffusion<2> &,
                      const TrilinosWrappers::MPI::Vector &,

@@ -54,6 +54,8 @@ namespace ltn
       j["solver"]["residual"]   = level.residual;
       j["mismatch_J"]           = level.mismatch_J;
       j["errors"]               = errors_to_json(level);
+      if (!level.extras.is_null())
+        j["mechanics"] = level.extras;
     }
   } // namespace
 

@@ -25,10 +25,10 @@ TEST_CASE("overlap quadrature interpolates FE fields exactly", "[coupling]")
   for (const unsigned int degree : {1u, 2u})
     for (const double eps : {0.1, 0.125, 0.3})
       {
-        const double                  h = 1. / 16;
-        const Kernel                  kernel("constant", 0.5, 1, eps);
-        NonlocalWeakForm1D            nonlocal(geometry, kernel, degree, h);
-        PoissonProblem<1>::Parameters parameters;
+        const double       h = 1. / 16;
+        const Kernel       kernel("constant", 0.5, 1, eps);
+        NonlocalWeakForm1D nonlocal(geometry, kernel, degree, h);
+        LocalParameters<1> parameters;
         parameters.degree = degree;
         PoissonProblem<1> local(geometry, parameters, h, MPI_COMM_SELF);
 
@@ -83,7 +83,7 @@ namespace
     geometry.overlap_width = 0.25;
     const double h = 1. / 8, eps = 2 * spacing;
 
-    typename PoissonProblem<dim>::Parameters parameters;
+    LocalParameters<dim> parameters;
     parameters.degree = degree;
     PoissonProblem<dim>    local(geometry, parameters, h, MPI_COMM_WORLD);
     const Kernel           kernel("constant", 0.5, dim, eps);

@@ -5,6 +5,7 @@
 
 #include <ltn/coupling/coupling_parameters.h>
 #include <ltn/coupling/coupling_system.h>
+#include <ltn/local/local_parameters.h>
 #include <ltn/local/poisson_problem.h>
 #include <ltn/nonlocal/nonlocal_parameters.h>
 #include <ltn/output/run_summary.h>
@@ -30,6 +31,8 @@ namespace ltn
   class DiffusionScene
   {
   public:
+    static constexpr int dimension = dim;
+
     /** Declare the parameters of the scene and of everything it uses. */
     static void
     declare_parameters(ParameterHandler &prm);
@@ -56,15 +59,15 @@ namespace ltn
     get_output_directory() const;
 
   private:
-    std::string                              scene_name;
-    Geometry<dim>                            geometry;
-    NonlocalParameters                       nonlocal_parameters;
-    typename PoissonProblem<dim>::Parameters local_parameters;
-    ProblemData                              problem_data;
-    Discretization                           discretization;
-    CouplingParameters                       coupling_parameters;
-    bool                                     write_vtu = true;
-    std::string                              output_directory;
-    std::vector<CouplingSolution>            solutions;
+    std::string                   scene_name;
+    Geometry<dim>                 geometry;
+    NonlocalParameters            nonlocal_parameters;
+    LocalParameters<dim>          local_parameters;
+    ProblemData                   problem_data;
+    Discretization                discretization;
+    CouplingParameters            coupling_parameters;
+    bool                          write_vtu = true;
+    std::string                   output_directory;
+    std::vector<CouplingSolution> solutions;
   };
 } // namespace ltn

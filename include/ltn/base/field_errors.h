@@ -40,7 +40,9 @@ namespace ltn
    * owned cells whose centre satisfies @p in_region, summed over all ranks:
    * L2 by Gauss quadrature of degree `p + 3`, max over an iterated
    * trapezoidal grid that contains every node. @p field must hold the
-   * values of the locally relevant degrees of freedom.
+   * values of the locally relevant degrees of freedom. For a vector-valued
+   * field (an FESystem; @p exact with as many components) the L2 norm is
+   * that of `|u_h - u|`, the max norm the largest error of any component.
    */
   template <int dim>
   ErrorNorms

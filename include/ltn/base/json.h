@@ -48,6 +48,12 @@ namespace ltn
     void
     write(std::ostream &out, const unsigned int indent = 0) const;
 
+    bool
+    is_null() const
+    {
+      return kind == Kind::null;
+    }
+
   private:
     enum class Kind
     {

@@ -7,6 +7,7 @@
 
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
 #include <ltn/nonlocal/particle_diffusion.h>
+#include <ltn/nonlocal/particle_elasticity.h>
 #include <ltn/scene/geometry.h>
 
 #include <utility>
@@ -62,16 +63,21 @@ namespace ltn
 
   /**
    * The particle overlap quadrature: one point per particle of `Omega_b`
-   * (the control particles, and the particles of `Omega_n` in `Omega_l`),
-   * with the particle's volume as weight; `E_q` picks the particle and `P_q`
-   * evaluates the local finite element field at its position. Each rank
-   * holds the points in its locally owned cells of the local mesh (which
-   * must be Cartesian).
+   * (the control particles, and the particles of `Omega_n` in `Omega_l`)
+   * and per component of the field (one for diffusion, `dim` displacement
+   * components for elasticity), with the particle's volume as weight; `E_q`
+   * picks the particle's component and `P_q` evaluates that component of the
+   * local finite element field at its position. Each rank holds the points
+   * in its locally owned cells of the local mesh (which must be Cartesian).
+   *
+   * @p ParticleModel is ParticleDiffusion or ParticleElasticity: it gives
+   * the lattice, the role of a particle, its volume, and the degree of
+   * freedom `dof(number, c)` of field component `c < n_field_components`.
    */
-  template <int dim>
+  template <int dim, template <int> class ParticleModel>
   OverlapQuadrature<dim>
-  create_overlap_quadrature(const Geometry<dim>          &geometry,
-                            const double                  horizon,
-                            const ParticleDiffusion<dim> &nonlocal,
-                            const DoFHandler<dim>        &local_dofs);
+  create_overlap_quadrature(const Geometry<dim>      &geometry,
+                            const double              horizon,
+                            const ParticleModel<dim> &nonlocal,
+                            const DoFHandler<dim>    &local_dofs);
 } // namespace ltn

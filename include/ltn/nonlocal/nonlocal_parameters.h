@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ltn/nonlocal/kernel.h>
+#include <ltn/scene/geometry.h>
 
 #include <string>
 
@@ -30,6 +31,19 @@ namespace ltn
     /** The particle spacing (2D, 3D) at mesh size @p h. */
     double
     particle_spacing(const double h) const;
+
+    /**
+     * Check the particle lattice of the coarsest level (mesh size @p h)
+     * against @p geometry and the local model's degree @p local_degree:
+     * the spacing resolves the horizon, divides the nonlocal region, and
+     * leaves every local control observed; an InputError names the ratio
+     * otherwise.
+     */
+    template <int dim>
+    void
+    validate_particles(const Geometry<dim> &geometry,
+                       const unsigned int   local_degree,
+                       const double         h) const;
 
     /** The kernel at mesh size @p h, for a @p dim dimensional model. */
     Kernel

@@ -56,6 +56,16 @@ namespace ltn
     const ParticleLattice<dim> &
     get_lattice() const;
 
+    /** The field has one component: the particle's value. */
+    static constexpr unsigned int n_field_components = 1;
+
+    /** The degree of freedom of particle @p number (component 0). */
+    static types::global_dof_index
+    dof(const types::global_dof_index number, const unsigned int /*c*/)
+    {
+      return number;
+    }
+
     /** The role of the particle at @p index. */
     DofRole
     role(const LatticeIndex &index) const;

@@ -114,6 +114,25 @@ namespace ltn
     std::vector<double>
     owned_broken_bond_fractions() const;
 
+    /** The opening of a crack, sampled at pairs of particles. */
+    struct CrackOpening
+    {
+      /** The points of the crack between the two particles of a pair. */
+      std::vector<Point<dim>> points;
+      /** `n . (u_+ - u_-)`: the normal jump of the displacement. */
+      std::vector<double> opening;
+    };
+
+    /**
+     * The opening of crack @p k in @p field (ghosted or not; each rank reads
+     * its own particles) at the pairs of particles that face each other
+     * across it half a spacing away, on all ranks, ordered along the crack.
+     * Empty when the crack does not lie halfway between lattice planes.
+     */
+    CrackOpening
+    crack_opening(const TrilinosWrappers::MPI::Vector &field,
+                  const unsigned int                   k) const;
+
     /**
      * Errors of the displacement in @p field against @p exact (`dim`
      * components) over the particles of `Omega_n` on all ranks:

@@ -30,6 +30,12 @@ namespace ltn
     /** False when the scene has no exact solution. */
     bool       has_errors = false;
     ErrorNorms nonlocal_errors, local_errors, coupled_errors;
+    /**
+     * What the scene's physics measures besides errors (elasticity: section
+     * forces, applied forces, crack openings), written as `mechanics`;
+     * null if nothing.
+     */
+    JsonValue extras;
     /** Wall time per phase, seconds, in the order the phases ran. */
     std::vector<std::pair<std::string, double>> timings;
   };

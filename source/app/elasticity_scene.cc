@@ -1,0 +1,498 @@
+#include <deal.II/base/timer.h>
+
+#include <ltn/app/elasticity_scene.h>
+#include <ltn/app/level_solve.h>
+#include <ltn/base/input_error.h>
+#include <ltn/coupling/overlap_quadrature.h>
+#include <ltn/local/elasticity_problem.h>
+#include <ltn/nonlocal/particle_elasticity.h>
+#include <ltn/output/elasticity_output.h>
+#include <ltn/output/field_output.h>
+#include <ltn/output/nonlocal_output.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <memory>
+
+namespace ltn
+{
+  namespace
+  {
+    /** "x=0.5, y=1" into (direction, coordinate) pairs. */
+    template <int dim>
+    std::vector<std::pair<unsigned int, double>>
+    parse_section_planes(const std::string &text, const Box<dim> &body)
+    {
+      std::vector<std::pair<unsigned int, double>> planes;
+      const std::string parameter = "Postprocess/Section planes";
+      for (const std::string &item : Utilities::split_string_list(text))
+        {
+          const auto        parts = Utilities::split_string_list(item, '=');
+          const std::string axes  = "xyz";
+          const auto        d     = parts.size() == 2 && parts[0].size() == 1 ?
+                                      axes.find(parts[0][0]) :
+                                      std::string::npos;
+          double            c     = 0;
+          bool              ok    = d < dim;
+          try
+            {
+              c = ok ? std::stod(parts[1]) : 0;
+            }
+          catch (const std::exception &)
+            {
+              ok = false;
+            }
+          check_input(ok,
+                      parameter,
+                      item,
+                      "planes `axis=coordinate` with an axis among the "
+                      "first " +
+                        std::to_string(dim) + " of x, y, z");
+          check_input(c > body.lower[d] && c < body.upper[d],
+                      parameter,
+                      item,
+                      "planes that cut the body, strictly between " +
+                        to_string(body.lower[d]) + " and " +
+                        to_string(body.upper[d]));
+          planes.emplace_back(d, c);
+        }
+      return planes;
+    }
+
+    JsonValue
+    tensor_to_json(const double *values, const unsigned int n)
+    {
+      JsonValue array = JsonValue::array();
+      for (unsigned int i = 0; i < n; ++i)
+        array.push_back(values[i]);
+      return array;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  ElasticityScene<dim>::declare_parameters(ParameterHandler &prm)
+  {
+    Material::declare_parameters(prm);
+    CrackSet<dim>::declare_parameters(prm);
+    ElasticityData::declare_parameters(prm);
+    prm.enter_subsection("Postprocess");
+    {
+      prm.declare_entry("Section planes",
+                        "",
+                        Patterns::Anything(),
+                        "Elasticity: planes of the local region, as "
+                        "`x=0.5, x=3.5`, through which the force (the "
+                        "integral of sigma e_x over the plane's faces) and "
+                        "the mean stress are reported. Each must be a plane "
+                        "of mesh faces.");
+      prm.declare_entry("Reference crack opening",
+                        "",
+                        Patterns::Anything(),
+                        "Elasticity: an expression of x, y, z for the normal "
+                        "opening of every crack, e.g. the classical "
+                        "`4*sigma/Eprime*sqrt(a^2 - x^2)` of a crack of "
+                        "length 2a (constants: E, nu, lambda, mu, Eprime = "
+                        "the plane-strain or plane-stress modulus of the "
+                        "classical profile, pi, eps, h). The summary reports "
+                        "the relative L2 difference of the computed "
+                        "opening. Empty: none.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  ElasticityScene<dim>::ElasticityScene(ParameterHandler  &prm,
+                                        const std::string &scene_name)
+    : scene_name(scene_name)
+  {
+    geometry.parse_parameters(prm);
+    nonlocal_parameters.parse_parameters(prm);
+    local_parameters.parse_parameters(prm);
+    material.parse_parameters(prm);
+    crack_set.parse_parameters(prm);
+    data.parse_parameters(prm);
+    discretization.parse_parameters(prm);
+    coupling_parameters.parse_parameters(prm);
+    prm.enter_subsection("Output");
+    output_directory = prm.get("Directory");
+    write_vtu        = prm.get_bool("Write VTU");
+    prm.leave_subsection();
+    prm.enter_subsection("Postprocess");
+    const std::string planes = prm.get("Section planes");
+    reference_crack_opening  = prm.get("Reference crack opening");
+    prm.leave_subsection();
+    section_planes = parse_section_planes<dim>(planes, geometry.body);
+
+    const double h0 = discretization.mesh_size(0);
+    // LPS reaches two horizons: the collar must hold the dilatations'
+    // neighbourhoods of the particles next to Omega_n.
+    const double eps0 = nonlocal_parameters.horizon(h0);
+    geometry.validate(h0, 2 * eps0);
+    if (geometry.has_nonlocal_model())
+      nonlocal_parameters.validate_particles(geometry,
+                                             local_parameters.degree,
+                                             h0);
+    check_input(!local_parameters.dirichlet_faces.empty(),
+                "Local model/Dirichlet boundaries",
+                "",
+                "at least one face: with tractions alone the displacement "
+                "is only determined up to a rigid motion");
+    // Nonlocal Neumann conditions cannot be prescribed: where Omega_n
+    // touches the body's boundary, its collar needs the volume constraint
+    // of every component.
+    for (unsigned int face = 0; face < 2 * dim; ++face)
+      check_input(
+        !geometry.has_nonlocal_model() ||
+          !geometry.nonlocal_face_on_body_boundary(face) ||
+          local_parameters.dirichlet_mask(face, dim).n_selected_components() ==
+            dim,
+        "Local model/Dirichlet boundaries",
+        Geometry<dim>::face_name(face) + " missing",
+        "the nonlocal region touches face " + Geometry<dim>::face_name(face) +
+          " of the body, whose collar needs the volume constraint "
+          "of every displacement component: list it among the "
+          "Dirichlet boundaries, with all components (put "
+          "tractions and pressures on faces of the local region "
+          "only)");
+
+    std::vector<double> spacings;
+    for (unsigned int level = 0; level < discretization.n_levels; ++level)
+      {
+        const double h = discretization.mesh_size(level);
+        spacings.push_back(nonlocal_parameters.particle_spacing(h));
+        data.functions<dim>(material, nonlocal_parameters.horizon(h), h);
+      }
+    crack_set.validate(geometry, spacings);
+    if (!reference_crack_opening.empty())
+      Expression<dim>("Postprocess/Reference crack opening",
+                      reference_crack_opening,
+                      {{"E", material.youngs_modulus},
+                       {"nu", material.poisson_ratio},
+                       {"lambda", material.lambda(dim)},
+                       {"mu", material.mu()},
+                       {"Eprime", material.crack_modulus(dim)},
+                       {"pi", numbers::PI},
+                       {"eps", eps0},
+                       {"h", h0}});
+  }
+
+
+
+  template <int dim>
+  RunSummary
+  ElasticityScene<dim>::run(const std::string  &output_directory,
+                            ConditionalOStream &out)
+  {
+    Timer total_timer;
+    solutions.clear();
+    const MPI_Comm communicator = MPI_COMM_WORLD;
+    const double   lambda = material.lambda(dim), mu = material.mu();
+
+    RunSummary summary;
+    summary.scene = scene_name;
+    summary.dim   = dim;
+    summary.model = "elasticity";
+
+    std::vector<std::pair<double, std::string>> nonlocal_files, local_files;
+
+    for (unsigned int level = 0; level < discretization.n_levels; ++level)
+      {
+        const double h         = discretization.mesh_size(level);
+        const double spacing   = nonlocal_parameters.particle_spacing(h);
+        const Kernel influence = nonlocal_parameters.kernel(dim, h);
+        const double eps       = influence.horizon();
+        const auto   f         = data.functions<dim>(material, eps, h);
+
+        std::unique_ptr<ParticleElasticity<dim>> nonlocal;
+        std::unique_ptr<ElasticityProblem<dim>>  local;
+        CouplingSolution                         solution;
+
+        for (unsigned int cycle = 0;
+             cycle <= (geometry.has_local_model() ?
+                         local_parameters.adaptive_cycles :
+                         0);
+             ++cycle)
+          {
+            ConditionalOStream silent(out.get_stream(), false);
+            TimerOutput        timer(silent,
+                              TimerOutput::never,
+                              TimerOutput::wall_times);
+            LevelRecord        record;
+            record.h       = h;
+            record.horizon = eps;
+            record.cycle   = cycle;
+
+            timer.enter_subsection("setup meshes");
+            if (cycle == 0)
+              {
+                if (geometry.has_nonlocal_model())
+                  nonlocal =
+                    std::make_unique<ParticleElasticity<dim>>(geometry,
+                                                              influence,
+                                                              spacing,
+                                                              lambda,
+                                                              mu,
+                                                              crack_set.cracks,
+                                                              communicator);
+                if (geometry.has_local_model())
+                  local = std::make_unique<ElasticityProblem<dim>>(
+                    geometry, local_parameters, lambda, mu, h, communicator);
+              }
+            else
+              // The particles of the overlap must keep observing the local
+              // field: its cells there keep at least p particle spacings.
+              local->refine(solution.fields[local_model],
+                            [&](const Point<dim> &center, const double size) {
+                              return !nonlocal ||
+                                     !geometry.in_overlap(center,
+                                                          2 * eps + size) ||
+                                     size / 2 >= local_parameters.degree *
+                                                   spacing * (1 - 1e-12);
+                            });
+            timer.leave_subsection();
+
+            if (nonlocal && cycle == 0)
+              {
+                timer.enter_subsection("assemble nonlocal");
+                nonlocal->assemble(*f.body_force, *f.volume_constraint_data);
+                timer.leave_subsection();
+              }
+            if (local)
+              {
+                timer.enter_subsection("assemble local");
+                local->assemble(*f.body_force,
+                                *f.boundary_data,
+                                *f.traction,
+                                *f.pressure);
+                timer.leave_subsection();
+              }
+
+            OverlapQuadrature<dim> overlap;
+            if (nonlocal && local)
+              {
+                timer.enter_subsection("assemble coupling");
+                overlap = create_overlap_quadrature(geometry,
+                                                    eps,
+                                                    *nonlocal,
+                                                    local->get_dof_handler());
+                timer.leave_subsection();
+              }
+            timer.enter_subsection("solve");
+            solution = solve_level(nonlocal ? &nonlocal->get_model() : nullptr,
+                                   local ? &local->get_model() : nullptr,
+                                   overlap,
+                                   coupling_parameters,
+                                   record);
+            timer.leave_subsection();
+            solutions.push_back(solution);
+
+            timer.enter_subsection("postprocess");
+            record.n_nonlocal_dofs =
+              nonlocal ? nonlocal->get_model().owned.size() : 0;
+            record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
+            const auto local_field =
+              local ? local->get_model().ghosted(solution.fields[local_model]) :
+                      TrilinosWrappers::MPI::Vector();
+            if (f.exact_solution)
+              {
+                const ErrorNorms none{std::numeric_limits<double>::quiet_NaN(),
+                                      std::numeric_limits<double>::quiet_NaN()};
+                const auto      &region = geometry.nonlocal_region;
+                const auto       tol    = geometry.tolerance();
+                record.has_errors       = true;
+                record.nonlocal_errors =
+                  nonlocal ? nonlocal->errors(solution.fields[nonlocal_model],
+                                              *f.exact_solution) :
+                             none;
+                record.local_errors =
+                  local ?
+                    field_errors<dim>(local->get_dof_handler(),
+                                      local_field,
+                                      *f.exact_solution,
+                                      [](const Point<dim> &) { return true; }) :
+                    none;
+                // The LtN solution: u_n on Omega_n, u_l on the rest.
+                record.coupled_errors =
+                  nonlocal ? record.nonlocal_errors : ErrorNorms();
+                if (local)
+                  record.coupled_errors.add(
+                    field_errors<dim>(local->get_dof_handler(),
+                                      local_field,
+                                      *f.exact_solution,
+                                      [&](const Point<dim> &p) {
+                                        return !nonlocal ||
+                                               !region.contains(p, tol);
+                                      }));
+              }
+
+            JsonValue mechanics = JsonValue::object();
+            if (local)
+              {
+                JsonValue sections = JsonValue::array();
+                for (const auto &[d, c] : section_planes)
+                  {
+                    const Tensor<1, dim> force =
+                      local->section_force(local_field, d, c);
+                    double area = 1;
+                    for (unsigned int e = 0; e < dim; ++e)
+                      if (e != d)
+                        area *= geometry.body.upper[e] - geometry.body.lower[e];
+                    JsonValue entry = JsonValue::object();
+                    entry["plane"] =
+                      std::string(1, "xyz"[d]) + "=" + to_string(c);
+                    entry["force"] = tensor_to_json(force.begin_raw(), dim);
+                    entry["mean_stress"] = force[d] / area;
+                    sections.push_back(entry);
+                  }
+                mechanics["section_forces"] = sections;
+                JsonValue applied           = JsonValue::array();
+                for (unsigned int face = 0; face < 2 * dim; ++face)
+                  if (local_parameters.dirichlet_mask(face, dim)
+                        .n_selected_components() < dim)
+                    {
+                      const Tensor<1, dim> force =
+                        local->applied_force(*f.traction, *f.pressure, face);
+                      JsonValue entry = JsonValue::object();
+                      entry["face"]   = Geometry<dim>::face_name(face);
+                      entry["force"]  = tensor_to_json(force.begin_raw(), dim);
+                      applied.push_back(entry);
+                    }
+                mechanics["applied_forces"] = applied;
+              }
+            if (nonlocal)
+              {
+                JsonValue                        openings = JsonValue::array();
+                std::unique_ptr<Expression<dim>> reference;
+                if (!reference_crack_opening.empty())
+                  reference = std::make_unique<Expression<dim>>(
+                    "Postprocess/Reference crack opening",
+                    reference_crack_opening,
+                    std::map<std::string, double>{
+                      {"E", material.youngs_modulus},
+                      {"nu", material.poisson_ratio},
+                      {"lambda", lambda},
+                      {"mu", mu},
+                      {"Eprime", material.crack_modulus(dim)},
+                      {"pi", numbers::PI},
+                      {"eps", eps},
+                      {"h", h}});
+                for (unsigned int k = 0; k < crack_set.cracks.size(); ++k)
+                  {
+                    const auto opening =
+                      nonlocal->crack_opening(solution.fields[nonlocal_model],
+                                              k);
+                    JsonValue entry  = JsonValue::object();
+                    JsonValue points = JsonValue::array();
+                    JsonValue values = JsonValue::array();
+                    double    max = 0, difference = 0, norm = 0;
+                    for (std::size_t i = 0; i < opening.points.size(); ++i)
+                      {
+                        points.push_back(
+                          tensor_to_json(opening.points[i].begin_raw(), dim));
+                        values.push_back(opening.opening[i]);
+                        max = std::max(max, opening.opening[i]);
+                        if (reference)
+                          {
+                            const double r =
+                              reference->value(opening.points[i]);
+                            difference += std::pow(opening.opening[i] - r, 2);
+                            norm += r * r;
+                          }
+                      }
+                    entry["points"]      = points;
+                    entry["opening"]     = values;
+                    entry["max_opening"] = max;
+                    if (reference)
+                      entry["relative_l2_difference_to_reference"] =
+                        std::sqrt(difference / norm);
+                    openings.push_back(entry);
+                  }
+                mechanics["crack_openings"] = openings;
+              }
+            record.extras = mechanics;
+            timer.leave_subsection();
+
+            if (!output_directory.empty() && write_vtu)
+              {
+                timer.enter_subsection("output");
+                const unsigned int step = summary.levels.size();
+                const std::string  suffix =
+                  "_level-" + Utilities::int_to_string(step, 2);
+                if (nonlocal)
+                  {
+                    nonlocal_files.emplace_back(
+                      step,
+                      write_nonlocal_vtu(*nonlocal,
+                                         solution.fields[nonlocal_model],
+                                         f.exact_solution.get(),
+                                         output_directory,
+                                         "particles" + suffix));
+                    write_level_collection(output_directory + "/particles.pvd",
+                                           nonlocal_files);
+                  }
+                if (local)
+                  {
+                    local_files.emplace_back(
+                      step,
+                      write_elasticity_vtu<dim>(
+                        local->get_dof_handler(),
+                        local_field,
+                        lambda,
+                        mu,
+                        f.exact_solution.get(),
+                        [&](const Point<dim> &p) {
+                          return geometry.local_region_of(p, 2 * eps);
+                        },
+                        output_directory,
+                        "local_mesh" + suffix));
+                    write_level_collection(output_directory + "/local_mesh.pvd",
+                                           local_files);
+                  }
+                timer.leave_subsection();
+              }
+            record_timings(timer, record);
+
+            out << "level " << level
+                << (cycle > 0 ? ", cycle " + std::to_string(cycle) :
+                                std::string())
+                << ": h = " << h << ", eps = " << eps
+                << ", particle dofs = " << record.n_nonlocal_dofs
+                << ", local dofs = " << record.n_local_dofs
+                << ", controls = " << record.n_controls
+                << ", iterations = " << record.iterations
+                << ", J = " << std::scientific << std::setprecision(3)
+                << record.mismatch_J << std::defaultfloat << std::endl;
+            summary.levels.push_back(record);
+          }
+      }
+    summary.total_time = total_timer.wall_time();
+    return summary;
+  }
+
+
+
+  template <int dim>
+  const std::vector<CouplingSolution> &
+  ElasticityScene<dim>::get_solutions() const
+  {
+    return solutions;
+  }
+
+
+
+  template <int dim>
+  const std::string &
+  ElasticityScene<dim>::get_output_directory() const
+  {
+    return output_directory;
+  }
+
+  template class ElasticityScene<2>;
+  template class ElasticityScene<3>;
+} // namespace ltn

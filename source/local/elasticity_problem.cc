@@ -1,0 +1,330 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/full_matrix.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <ltn/local/closed_model.h>
+#include <ltn/local/elasticity_problem.h>
+
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace ltn
+{
+  namespace
+  {
+    /** Hooke's law: `lambda tr(eps) I + 2 mu eps`. */
+    template <int dim>
+    SymmetricTensor<2, dim>
+    stress(const SymmetricTensor<2, dim> &strain,
+           const double                   lambda,
+           const double                   mu)
+    {
+      return lambda * trace(strain) * unit_symmetric_tensor<dim>() +
+             2 * mu * strain;
+    }
+
+
+
+    /** `traction - pressure n` at a point with unit normal @p normal. */
+    template <int dim>
+    Tensor<1, dim>
+    applied_traction(const Function<dim>  &traction,
+                     const Function<dim>  &pressure,
+                     const Point<dim>     &point,
+                     const Tensor<1, dim> &normal)
+    {
+      Tensor<1, dim> t;
+      const double   p = pressure.value(point);
+      for (unsigned int c = 0; c < dim; ++c)
+        t[c] = traction.value(point, c) - p * normal[c];
+      return t;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  ElasticityProblem<dim>::ElasticityProblem(
+    const Geometry<dim>        &geometry,
+    const LocalParameters<dim> &parameters,
+    const double                lambda,
+    const double                mu,
+    const double                h,
+    const MPI_Comm              communicator)
+    : parameters(parameters)
+    , lambda_value(lambda)
+    , mu_value(mu)
+    , tolerance(geometry.tolerance())
+    , communicator(communicator)
+    , mesh(geometry, h, communicator)
+    , fe(FE_Q<dim>(parameters.degree), dim)
+    , dof_handler(mesh.get_triangulation())
+  {
+    // Strongly elliptic (the energy of any nonzero strain is positive).
+    AssertThrow(mu > 0 && lambda + 2. * mu / dim > 0,
+                ExcMessage("the Lamé parameters must satisfy mu > 0 and "
+                           "lambda + 2 mu / dim > 0"));
+    setup_local_dofs(dof_handler, fe, communicator, hanging_nodes, model);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::refine(
+    const TrilinosWrappers::MPI::Vector                   &solution,
+    const std::function<bool(const Point<dim> &, double)> &may_refine)
+  {
+    mesh.refine(dof_handler,
+                model.ghosted(solution),
+                parameters.refinement_fraction,
+                may_refine);
+    setup_local_dofs(dof_handler, fe, communicator, hanging_nodes, model);
+  }
+
+
+
+  template <int dim>
+  void
+  ElasticityProblem<dim>::assemble(const Function<dim> &body_force,
+                                   const Function<dim> &boundary_data,
+                                   const Function<dim> &traction,
+                                   const Function<dim> &pressure)
+  {
+    AssertThrow(body_force.n_components == dim &&
+                  boundary_data.n_components == dim &&
+                  traction.n_components == dim && pressure.n_components == 1,
+                ExcMessage("body force, boundary data and traction need dim "
+                           "components, the pressure one"));
+    reinit_local_model(dof_handler, hanging_nodes, model);
+
+    const FEValuesExtractors::Vector     displacement(0);
+    const QGauss<dim>                    quadrature(fe.degree + 2);
+    const QGauss<dim - 1>                face_quadrature(fe.degree + 2);
+    FEValues<dim>                        fe_values(fe,
+                            quadrature,
+                            update_values | update_gradients |
+                              update_quadrature_points | update_JxW_values);
+    FEFaceValues<dim>                    fe_face_values(fe,
+                                     face_quadrature,
+                                     update_values | update_normal_vectors |
+                                       update_quadrature_points |
+                                       update_JxW_values);
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(dofs_per_cell);
+    std::vector<SymmetricTensor<2, dim>> strains(dofs_per_cell);
+    std::vector<double>                  divergences(dofs_per_cell);
+    Vector<double>                       force(dim);
+    FullMatrix<double>                   cell_matrix(dofs_per_cell);
+    Vector<double>                       cell_rhs(dofs_per_cell);
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell->get_dof_indices(dofs);
+          cell_matrix = 0;
+          cell_rhs    = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double JxW = fe_values.JxW(q);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  strains[i] = fe_values[displacement].symmetric_gradient(i, q);
+                  divergences[i] = trace(strains[i]);
+                }
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                  cell_matrix(i, j) +=
+                    (lambda_value * divergences[i] * divergences[j] +
+                     2 * mu_value * (strains[i] * strains[j])) *
+                    JxW;
+
+              body_force.vector_value(fe_values.quadrature_point(q), force);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  const unsigned int c = fe.system_to_component_index(i).first;
+                  cell_rhs(i) += force[c] * fe_values.shape_value(i, q) * JxW;
+                }
+            }
+
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() != control_boundary_id)
+              {
+                const ComponentMask fixed =
+                  parameters.dirichlet_mask(cell->face(f)->boundary_id(), dim);
+                if (fixed.n_selected_components(dim) == dim)
+                  continue;
+                fe_face_values.reinit(cell, f);
+                for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                  {
+                    const Tensor<1, dim> t =
+                      applied_traction(traction,
+                                       pressure,
+                                       fe_face_values.quadrature_point(q),
+                                       fe_face_values.normal_vector(q));
+                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                      {
+                        const unsigned int c =
+                          fe.system_to_component_index(i).first;
+                        if (!fixed[c])
+                          cell_rhs(i) += t[c] *
+                                         fe_face_values.shape_value(i, q) *
+                                         fe_face_values.JxW(q);
+                      }
+                  }
+              }
+          // Condensed: the equations of hanging nodes go to their masters.
+          hanging_nodes.distribute_local_to_global(
+            cell_matrix, cell_rhs, dofs, model.matrix, model.rhs);
+        }
+    model.matrix.compress(VectorOperation::add);
+    model.rhs.compress(VectorOperation::add);
+
+    std::map<types::global_dof_index, double> dirichlet_values;
+    for (const unsigned int face : parameters.dirichlet_faces)
+      VectorTools::interpolate_boundary_values(dof_handler,
+                                               face,
+                                               boundary_data,
+                                               dirichlet_values,
+                                               parameters.dirichlet_mask(face,
+                                                                         dim));
+    close_local_model(
+      dof_handler, hanging_nodes, dirichlet_values, control_boundary_id, model);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ElasticityProblem<dim>::section_force(
+    const TrilinosWrappers::MPI::Vector &ghosted_solution,
+    const unsigned int                   d,
+    const double                         c) const
+  {
+    AssertThrow(d < dim, ExcIndexRange(d, 0, dim));
+    const FEValuesExtractors::Vector     displacement(0);
+    const QGauss<dim - 1>                face_quadrature(fe.degree + 1);
+    FEFaceValues<dim>                    fe_face_values(fe,
+                                     face_quadrature,
+                                     update_gradients | update_JxW_values);
+    std::vector<SymmetricTensor<2, dim>> strains(face_quadrature.size());
+
+    Tensor<1, dim> force;
+    unsigned int   n_faces = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          {
+            const auto   face       = cell->face(f);
+            const double coordinate = face->center()[d];
+            // Cartesian cells: the face is normal to e_d iff its centre is
+            // off the cell's centre in direction d.
+            const bool upper = coordinate > cell->center()[d] + tolerance;
+            const bool lower = coordinate < cell->center()[d] - tolerance;
+            if (std::abs(coordinate - c) > tolerance ||
+                !(upper || (lower && face->at_boundary())))
+              continue;
+            ++n_faces;
+            fe_face_values.reinit(cell, f);
+            fe_face_values[displacement].get_function_symmetric_gradients(
+              ghosted_solution, strains);
+            for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+              {
+                const SymmetricTensor<2, dim> sigma =
+                  stress(strains[q], lambda_value, mu_value);
+                for (unsigned int k = 0; k < dim; ++k)
+                  force[k] += sigma[k][d] * fe_face_values.JxW(q);
+              }
+          }
+    AssertThrow(Utilities::MPI::sum(n_faces, communicator) > 0,
+                ExcMessage("no face of the local mesh lies in the plane x_" +
+                           std::to_string(d) + " = " + std::to_string(c)));
+    return Utilities::MPI::sum(force, communicator);
+  }
+
+
+
+  template <int dim>
+  Tensor<1, dim>
+  ElasticityProblem<dim>::applied_force(const Function<dim> &traction,
+                                        const Function<dim> &pressure,
+                                        const unsigned int   face) const
+  {
+    AssertThrow(face < 2 * dim, ExcIndexRange(face, 0, 2 * dim));
+    AssertThrow(traction.n_components == dim && pressure.n_components == 1,
+                ExcMessage("the traction needs dim components, the pressure "
+                           "one"));
+    const QGauss<dim - 1> face_quadrature(fe.degree + 2);
+    FEFaceValues<dim>     fe_face_values(fe,
+                                     face_quadrature,
+                                     update_normal_vectors |
+                                       update_quadrature_points |
+                                       update_JxW_values);
+    Tensor<1, dim>        force;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              cell->face(f)->boundary_id() == face)
+            {
+              fe_face_values.reinit(cell, f);
+              for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+                force += applied_traction(traction,
+                                          pressure,
+                                          fe_face_values.quadrature_point(q),
+                                          fe_face_values.normal_vector(q)) *
+                         fe_face_values.JxW(q);
+            }
+    return Utilities::MPI::sum(force, communicator);
+  }
+
+
+
+  template <int dim>
+  const DoFHandler<dim> &
+  ElasticityProblem<dim>::get_dof_handler() const
+  {
+    return dof_handler;
+  }
+
+
+
+  template <int dim>
+  const DiscreteModel &
+  ElasticityProblem<dim>::get_model() const
+  {
+    return model;
+  }
+
+
+
+  template <int dim>
+  double
+  ElasticityProblem<dim>::lambda() const
+  {
+    return lambda_value;
+  }
+
+
+
+  template <int dim>
+  double
+  ElasticityProblem<dim>::mu() const
+  {
+    return mu_value;
+  }
+
+
+
+  template class ElasticityProblem<2>;
+  template class ElasticityProblem<3>;
+} // namespace ltn

@@ -1,0 +1,182 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/distributed/grid_refinement.h>
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_refinement.h>
+
+#include <deal.II/numerics/error_estimator.h>
+
+#include <ltn/local/local_mesh.h>
+
+#include <cmath>
+#include <set>
+#include <vector>
+
+namespace ltn
+{
+  namespace
+  {
+    /** A distributed mesh in 2D and 3D, a serial one in 1D. */
+    template <int dim>
+    std::unique_ptr<Triangulation<dim>>
+    make_triangulation(const MPI_Comm communicator)
+    {
+      if constexpr (dim == 1)
+        {
+          AssertThrow(Utilities::MPI::n_mpi_processes(communicator) == 1,
+                      ExcMessage("1D meshes are serial"));
+          return std::make_unique<Triangulation<1>>();
+        }
+      else
+        return std::make_unique<parallel::distributed::Triangulation<dim>>(
+          communicator);
+    }
+
+    /**
+     * The number of times a mesh of size @p h can be coarsened so that the
+     * body and the local region stay unions of its cells.
+     */
+    template <int dim>
+    unsigned int
+    coarsening_steps(const Geometry<dim> &geometry, const double h)
+    {
+      const Box<dim> hole    = geometry.shrunk_nonlocal_region();
+      const auto     aligned = [&](const double length, const double size) {
+        const double n = length / size;
+        return std::abs(n - std::round(n)) < 1e-8 * std::max(1., n);
+      };
+      unsigned int steps = 0;
+      while (steps < 20)
+        {
+          const double size = h * (1 << (steps + 1));
+          bool         fits = true;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double origin = geometry.body.lower[d];
+              fits = fits && aligned(geometry.body.upper[d] - origin, size) &&
+                     (!geometry.has_nonlocal_model() ||
+                      (aligned(hole.lower[d] - origin, size) &&
+                       aligned(hole.upper[d] - origin, size)));
+            }
+          if (!fits)
+            break;
+          ++steps;
+        }
+      return steps;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  LocalMesh<dim>::LocalMesh(const Geometry<dim> &geometry,
+                            const double         h,
+                            const MPI_Comm       communicator)
+    : triangulation(make_triangulation<dim>(communicator))
+  {
+    // A coarse mesh of the body minus the cells of the shrunk nonlocal
+    // region (the geometry is aligned with h, see Geometry::validate()),
+    // then refined to h.
+    const unsigned int        steps = coarsening_steps(geometry, h);
+    const double              H     = h * (1 << steps);
+    std::vector<unsigned int> repetitions(dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      repetitions[d] = static_cast<unsigned int>(
+        std::round((geometry.body.upper[d] - geometry.body.lower[d]) / H));
+    Triangulation<dim> body_mesh;
+    GridGenerator::subdivided_hyper_rectangle(body_mesh,
+                                              repetitions,
+                                              geometry.body.lower,
+                                              geometry.body.upper);
+    std::set<typename Triangulation<dim>::active_cell_iterator> removed;
+    for (const auto &cell : body_mesh.active_cell_iterators())
+      if (!geometry.in_local_region(cell->center()))
+        removed.insert(cell);
+    GridGenerator::create_triangulation_with_removed_cells(body_mesh,
+                                                           removed,
+                                                           *triangulation);
+
+    // Set on the coarse mesh (all of it, on every rank), inherited by the
+    // refined cells.
+    const double tol = geometry.tolerance();
+    for (const auto &cell : triangulation->cell_iterators_on_level(0))
+      for (const auto f : cell->face_indices())
+        if (cell->face(f)->at_boundary())
+          {
+            const Point<dim>   center = cell->face(f)->center();
+            types::boundary_id id     = control_boundary_id;
+            for (unsigned int face = 0; face < 2 * dim; ++face)
+              {
+                const double body_coordinate = (face % 2 == 0) ?
+                                                 geometry.body.lower[face / 2] :
+                                                 geometry.body.upper[face / 2];
+                if (std::abs(center[face / 2] - body_coordinate) <= tol)
+                  id = face;
+              }
+            cell->face(f)->set_boundary_id(id);
+          }
+    triangulation->refine_global(steps);
+  }
+
+
+
+  template <int dim>
+  Triangulation<dim> &
+  LocalMesh<dim>::get_triangulation()
+  {
+    return *triangulation;
+  }
+
+
+
+  template <int dim>
+  const Triangulation<dim> &
+  LocalMesh<dim>::get_triangulation() const
+  {
+    return *triangulation;
+  }
+
+
+
+  template <int dim>
+  void
+  LocalMesh<dim>::refine(
+    const DoFHandler<dim>                                 &dof_handler,
+    const TrilinosWrappers::MPI::Vector                   &ghosted_solution,
+    const double                                           fraction,
+    const std::function<bool(const Point<dim> &, double)> &may_refine)
+  {
+    Vector<float> indicators(triangulation->n_active_cells());
+    KellyErrorEstimator<dim>::estimate(dof_handler,
+                                       QGauss<dim - 1>(
+                                         dof_handler.get_fe().degree + 1),
+                                       {},
+                                       ghosted_solution,
+                                       indicators);
+    if constexpr (dim == 1)
+      GridRefinement::refine_and_coarsen_fixed_number(*triangulation,
+                                                      indicators,
+                                                      fraction,
+                                                      0);
+    else
+      parallel::distributed::GridRefinement::refine_and_coarsen_fixed_number(
+        static_cast<parallel::distributed::Triangulation<dim> &>(
+          *triangulation),
+        indicators,
+        fraction,
+        0);
+    for (const auto &cell : triangulation->active_cell_iterators())
+      if (cell->is_locally_owned() && cell->refine_flag_set() &&
+          !may_refine(cell->center(), cell->extent_in_direction(0)))
+        cell->clear_refine_flag();
+    triangulation->execute_coarsening_and_refinement();
+  }
+
+
+
+  template class LocalMesh<1>;
+  template class LocalMesh<2>;
+  template class LocalMesh<3>;
+} // namespace ltn
