@@ -41,7 +41,7 @@ case "${1:-}" in
     install_missing
     build_ltn
     cd "$here"
-    "$build/ltn" parameter_files/diffusion_1d_convergence.prm
+    "$build/ltn" parameter_files/lps_bar_3d_tensile_crack.prm
     ;;
   test)
     install_missing

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <ltn/app/diffusion_scene.h>
+#include <ltn/app/level_solve.h>
 #include <ltn/base/field_errors.h>
 #include <ltn/base/input_error.h>
 #include <ltn/coupling/model_solver.h>
@@ -9,6 +10,8 @@
 #include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/output/field_output.h>
 #include <ltn/output/nonlocal_output.h>
+#include <ltn/scene/crack.h>
+#include <ltn/scene/elasticity_data.h>
 
 #include <cmath>
 #include <iomanip>
@@ -106,38 +109,17 @@ namespace ltn
     const double eps0 = nonlocal_parameters.horizon(h0);
     geometry.validate(h0, eps0);
 
-    if (dim > 1 && geometry.has_nonlocal_model())
-      {
-        // The particle lattice fills Omega_n and resolves the horizon.
-        const double spacing = nonlocal_parameters.particle_spacing(h0);
-        // One particle per nodal spacing of FE_Q(p), or some local control
-        // modes go unobserved in the overlap and the system is singular.
-        check_input(nonlocal_parameters.spacing_ratio *
-                        local_parameters.degree <=
-                      1 + 1e-12,
-                    "Nonlocal model/Particle spacing to mesh size ratio",
-                    to_string(nonlocal_parameters.spacing_ratio),
-                    "at most 1/p = " + to_string(1. / local_parameters.degree) +
-                      " for FE_Q(p) on the local side, so that the particles "
-                      "of the overlap observe every local control");
-        check_input(spacing <= eps0 * (1 + 1e-12),
-                    "Nonlocal model/Particle spacing to mesh size ratio",
-                    to_string(nonlocal_parameters.spacing_ratio),
-                    "the particle spacing " + to_string(spacing) +
-                      " must not exceed the horizon " + to_string(eps0));
-        for (unsigned int d = 0; d < dim; ++d)
-          {
-            const double n = (geometry.nonlocal_region.upper[d] -
-                              geometry.nonlocal_region.lower[d]) /
-                             spacing;
-            check_input(std::abs(n - std::round(n)) < 1e-8 * n,
-                        "Nonlocal model/Particle spacing to mesh size ratio",
-                        to_string(nonlocal_parameters.spacing_ratio),
-                        "the particle spacing " + to_string(spacing) +
-                          " must divide the nonlocal region's extent " +
-                          to_string(n * spacing) + " a whole number of times");
-          }
-      }
+    if constexpr (dim > 1)
+      if (geometry.has_nonlocal_model())
+        nonlocal_parameters.validate_particles(geometry,
+                                               local_parameters.degree,
+                                               h0);
+    // What only elasticity scenes use must not be set here.
+    ElasticityData::check_unused(prm);
+    check_input(crack_corners_text(prm).empty(),
+                "Cracks/Corners",
+                crack_corners_text(prm),
+                "empty: elasticity scenes only (Model = elasticity)");
 
     check_input(!local_parameters.dirichlet_faces.empty(),
                 "Local model/Dirichlet boundaries",
@@ -266,62 +248,29 @@ namespace ltn
                 timer.leave_subsection();
               }
 
-            solution = CouplingSolution();
+            OverlapQuadrature<dim> overlap;
             if (nonlocal && local)
               {
                 timer.enter_subsection("assemble coupling");
-                const OverlapQuadrature<dim> overlap =
-                  create_overlap_quadrature(geometry,
-                                            eps,
-                                            *nonlocal,
-                                            local->get_dof_handler());
-                const CouplingSystem<dim> system(
-                  nonlocal->get_model(),
-                  local->get_model(),
-                  overlap,
-                  coupling_parameters.tikhonov_parameter);
+                overlap = create_overlap_quadrature(geometry,
+                                                    eps,
+                                                    *nonlocal,
+                                                    local->get_dof_handler());
                 timer.leave_subsection();
-
-                timer.enter_subsection("solve");
-                solution = coupling_parameters.solve(system);
-                timer.leave_subsection();
-                record.n_controls    = system.n_controls();
-                record.solver_method = coupling_parameters.method;
-                record.mismatch_J =
-                  system.objective(solution.fields[0], solution.fields[1]);
               }
-            else
-              {
-                // One model on the whole body: its own direct solve.
-                timer.enter_subsection("solve");
-                const unsigned int k = nonlocal ? nonlocal_model : local_model;
-                const DiscreteModel &model =
-                  nonlocal ? nonlocal->get_model() : local->get_model();
-                const ModelSolver solver(model, false);
-                solution.fields[k] =
-                  solver.forward(solver.new_control_vector(), true);
-                solution.iterations = 1;
-                timer.leave_subsection();
-                record.solver_method = "direct";
-              }
-            bool finite = true;
-            for (const auto &field : solution.fields)
-              for (const double value : field)
-                finite = finite && std::isfinite(value);
-            AssertThrow(Utilities::MPI::min(finite ? 1 : 0, MPI_COMM_WORLD) ==
-                          1,
-                        ExcMessage(
-                          "The solution is not finite: an expression of "
-                          "Problem data has values that are not (a division "
-                          "by zero, a logarithm of a negative number, ...)."));
+            timer.enter_subsection("solve");
+            solution = solve_level(nonlocal ? &nonlocal->get_model() : nullptr,
+                                   local ? &local->get_model() : nullptr,
+                                   overlap,
+                                   coupling_parameters,
+                                   record);
+            timer.leave_subsection();
             solutions.push_back(solution);
 
             timer.enter_subsection("postprocess");
             record.n_nonlocal_dofs =
               nonlocal ? nonlocal->get_model().owned.size() : 0;
             record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
-            record.iterations   = solution.iterations;
-            record.residual     = solution.residual;
             if (data.exact_solution)
               {
                 // A missing model's errors are NaN, written as null.
@@ -401,20 +350,7 @@ namespace ltn
                 timer.leave_subsection();
               }
 
-            const auto times =
-              timer.get_summary_data(TimerOutput::total_wall_time);
-            for (const std::string phase : {"setup meshes",
-                                            "assemble nonlocal",
-                                            "assemble local",
-                                            "assemble coupling",
-                                            "solve",
-                                            "postprocess",
-                                            "output"})
-              {
-                const auto entry = times.find(phase);
-                record.timings.emplace_back(
-                  phase, entry == times.end() ? 0. : entry->second);
-              }
+            record_timings(timer, record);
 
             out << "level " << level
                 << (cycle > 0 ? ", cycle " + std::to_string(cycle) :

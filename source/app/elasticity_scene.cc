@@ -14,6 +14,7 @@
 #include <iomanip>
 #include <limits>
 #include <memory>
+#include <sstream>
 
 namespace ltn
 {
@@ -331,7 +332,9 @@ namespace ltn
                                       }));
               }
 
-            JsonValue mechanics = JsonValue::object();
+            JsonValue          mechanics = JsonValue::object();
+            std::ostringstream report;
+            report << std::setprecision(6);
             if (local)
               {
                 JsonValue sections = JsonValue::array();
@@ -348,6 +351,9 @@ namespace ltn
                       std::string(1, "xyz"[d]) + "=" + to_string(c);
                     entry["force"] = tensor_to_json(force.begin_raw(), dim);
                     entry["mean_stress"] = force[d] / area;
+                    report << "  force through "
+                           << "xyz"[d] << " = " << c << ": " << force
+                           << " (mean stress " << force[d] / area << ")\n";
                     sections.push_back(entry);
                   }
                 mechanics["section_forces"] = sections;
@@ -358,6 +364,10 @@ namespace ltn
                     {
                       const Tensor<1, dim> force =
                         local->applied_force(*f.traction, *f.pressure, face);
+                      if (force.norm() > 0)
+                        report << "  applied force on "
+                               << Geometry<dim>::face_name(face) << ": "
+                               << force << "\n";
                       JsonValue entry = JsonValue::object();
                       entry["face"]   = Geometry<dim>::face_name(face);
                       entry["force"]  = tensor_to_json(force.begin_raw(), dim);
@@ -405,6 +415,13 @@ namespace ltn
                             norm += r * r;
                           }
                       }
+                    report << "  crack " << k << ": opening at "
+                           << opening.points.size() << " particle pairs, max "
+                           << max;
+                    if (reference)
+                      report << ", relative L2 difference to the reference "
+                             << std::sqrt(difference / norm);
+                    report << "\n";
                     entry["points"]      = points;
                     entry["opening"]     = values;
                     entry["max_opening"] = max;
@@ -467,7 +484,8 @@ namespace ltn
                 << ", controls = " << record.n_controls
                 << ", iterations = " << record.iterations
                 << ", J = " << std::scientific << std::setprecision(3)
-                << record.mismatch_J << std::defaultfloat << std::endl;
+                << record.mismatch_J << std::defaultfloat << std::endl
+                << report.str();
             summary.levels.push_back(record);
           }
       }

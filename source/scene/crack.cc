@@ -159,13 +159,22 @@ namespace ltn
 
 
 
-  template <int dim>
-  void
-  CrackSet<dim>::parse_parameters(ParameterHandler &prm)
+  std::string
+  crack_corners_text(ParameterHandler &prm)
   {
     prm.enter_subsection("Cracks");
     const std::string text = prm.get("Corners");
     prm.leave_subsection();
+    return text;
+  }
+
+
+
+  template <int dim>
+  void
+  CrackSet<dim>::parse_parameters(ParameterHandler &prm)
+  {
+    const std::string text = crack_corners_text(prm);
     cracks.clear();
     for (const std::string &item : Utilities::split_string_list(text, ';'))
       {
