@@ -471,6 +471,8 @@ namespace ltn
                     write_level_collection(output_directory + "/local_mesh.pvd",
                                            local_files);
                   }
+                write_grouped_collection(output_directory + "/scene.pvd",
+                                         {nonlocal_files, local_files});
                 timer.leave_subsection();
               }
             record_timings(timer, record);

@@ -80,6 +80,24 @@ namespace ltn
     DataOutBase::write_pvd_record(out, level_files);
   }
 
+  void
+  write_grouped_collection(
+    const std::string                                              &filename,
+    const std::vector<std::vector<std::pair<double, std::string>>> &parts)
+  {
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
+    std::ofstream out(filename);
+    out << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"Collection\" version=\"0.1\" "
+           "byte_order=\"LittleEndian\">\n  <Collection>\n";
+    for (std::size_t part = 0; part < parts.size(); ++part)
+      for (const auto &[time, file] : parts[part])
+        out << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\""
+            << part << "\" file=\"" << file << "\"/>\n";
+    out << "  </Collection>\n</VTKFile>\n";
+  }
+
 #define LTN_INSTANTIATE(dim)                           \
   template std::string write_field_vtu(                \
     const DoFHandler<dim> &,                           \

@@ -43,4 +43,14 @@ namespace ltn
   write_level_collection(
     const std::string                                 &filename,
     const std::vector<std::pair<double, std::string>> &level_files);
+
+  /**
+   * Write a ParaView collection that groups several series, one part each
+   * (e.g. the particles and the local mesh), level by level, so that one
+   * file opens the whole scene; on the first rank only.
+   */
+  void
+  write_grouped_collection(
+    const std::string                                              &filename,
+    const std::vector<std::vector<std::pair<double, std::string>>> &parts);
 } // namespace ltn
