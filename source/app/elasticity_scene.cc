@@ -460,8 +460,7 @@ namespace ltn
                       write_elasticity_vtu<dim>(
                         local->get_dof_handler(),
                         local_field,
-                        lambda,
-                        mu,
+                        material,
                         f.exact_solution.get(),
                         [&](const Point<dim> &p) {
                           return geometry.local_region_of(p, 2 * eps);

@@ -25,11 +25,11 @@ namespace ltn
     {
     public:
       StrainAndStress(
-        const double                                     lambda,
-        const double                                     mu,
+        const Material                                  &material,
         const std::function<Region(const Point<dim> &)> &region_of)
-        : lambda(lambda)
-        , mu(mu)
+        : lambda(material.lambda(dim))
+        , mu(material.mu())
+        , plane_stress(material.plane == Material::Plane::stress)
         , region_of(region_of)
       {}
 
@@ -58,12 +58,13 @@ namespace ltn
                   out[dim * dim + i * dim + j] = stress[i][j];
                 }
 
-            // The 3D stress state; in 2D plane strain, eps_zz = 0.
+            // The 3D stress state; in 2D plane strain eps_zz = 0, in plane
+            // stress sigma_zz = 0.
             SymmetricTensor<2, 3> stress_3d;
             for (unsigned int i = 0; i < dim; ++i)
               for (unsigned int j = i; j < dim; ++j)
                 stress_3d[i][j] = stress[i][j];
-            if (dim == 2)
+            if (dim == 2 && !plane_stress)
               stress_3d[2][2] = lambda * trace(strain);
             const SymmetricTensor<2, 3> s = deviator(stress_3d);
             out[2 * dim * dim]            = std::sqrt(1.5 * (s * s));
@@ -104,6 +105,7 @@ namespace ltn
     private:
       const double                                     lambda;
       const double                                     mu;
+      const bool                                       plane_stress;
       const std::function<Region(const Point<dim> &)> &region_of;
     };
   } // namespace
@@ -115,8 +117,7 @@ namespace ltn
   write_elasticity_vtu(
     const DoFHandler<dim>                           &dof_handler,
     const TrilinosWrappers::MPI::Vector             &ghosted_field,
-    const double                                     lambda,
-    const double                                     mu,
+    const Material                                  &material,
     const Function<dim>                             *exact,
     const std::function<Region(const Point<dim> &)> &region_of,
     const std::string                               &directory,
@@ -143,7 +144,7 @@ namespace ltn
                              std::vector<std::string>(dim, "displacement"),
                              DataOut<dim>::type_dof_data,
                              vector_field);
-    const StrainAndStress<dim> strain_and_stress(lambda, mu, region_of);
+    const StrainAndStress<dim> strain_and_stress(material, region_of);
     data_out.add_data_vector(ghosted_field, strain_and_stress);
 
     TrilinosWrappers::MPI::Vector exact_ghosted, error_ghosted;
@@ -177,8 +178,7 @@ namespace ltn
   template std::string
   write_elasticity_vtu(const DoFHandler<2> &,
                        const TrilinosWrappers::MPI::Vector &,
-                       double,
-                       double,
+                       const Material &,
                        const Function<2> *,
                        const std::function<Region(const Point<2> &)> &,
                        const std::string &,
@@ -186,8 +186,7 @@ namespace ltn
   template std::string
   write_elasticity_vtu(const DoFHandler<3> &,
                        const TrilinosWrappers::MPI::Vector &,
-                       double,
-                       double,
+                       const Material &,
                        const Function<3> *,
                        const std::function<Region(const Point<3> &)> &,
                        const std::string &,

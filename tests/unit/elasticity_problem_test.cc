@@ -548,11 +548,14 @@ TEST_CASE("elasticity output has displacement, strain, stress, von Mises",
   if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     std::filesystem::create_directories(directory);
   MPI_Barrier(MPI_COMM_WORLD);
+  // The material with these Lamé constants, plane strain.
+  Material material;
+  material.poisson_ratio   = lambda / (2 * (lambda + mu));
+  material.youngs_modulus  = 2 * mu * (1 + material.poisson_ratio);
   const std::string record = write_elasticity_vtu<2>(
     problem.get_dof_handler(),
     solution,
-    lambda,
-    mu,
+    material,
     &u,
     [](const Point<2> &) { return Region::local; },
     directory,

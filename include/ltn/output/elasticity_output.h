@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/scene/geometry.h>
+#include <ltn/scene/material.h>
 
 #include <functional>
 #include <string>
@@ -19,9 +20,10 @@ namespace ltn
    * Write a distributed displacement field (an `FESystem` of `dim`
    * components) as `directory/name.pvtu` (see write_parallel_vtu()) with
    * what a user looks at in ParaView: the vector `displacement` (for Warp
-   * By Vector), the tensors `strain` and `stress` (Hooke's law with
-   * @p lambda and @p mu), the scalar `von_mises` stress (in 2D of the
-   * plane-strain state, `sigma_zz = lambda tr(eps)`), the `region` tag (see
+   * By Vector), the tensors `strain` and `stress` (Hooke's law with the
+   * Lamé constants of @p material in the dimension), the scalar `von_mises`
+   * stress (in 2D of the plane state: `sigma_zz = lambda tr(eps)` in plane
+   * strain, zero in plane stress), the `region` tag (see
    * Region) that @p region_of gives for a point, and when @p exact (with
    * `dim` components) is given, the vectors `displacement_exact` and
    * `error = u - u_exact` (at the nodes). @p ghosted_field holds the values
@@ -33,8 +35,7 @@ namespace ltn
   write_elasticity_vtu(
     const DoFHandler<dim>                           &dof_handler,
     const TrilinosWrappers::MPI::Vector             &ghosted_field,
-    const double                                     lambda,
-    const double                                     mu,
+    const Material                                  &material,
     const Function<dim>                             *exact,
     const std::function<Region(const Point<dim> &)> &region_of,
     const std::string                               &directory,
