@@ -4,7 +4,6 @@
 #include <ltn/app/level_solve.h>
 #include <ltn/base/field_errors.h>
 #include <ltn/base/input_error.h>
-#include <ltn/coupling/model_solver.h>
 #include <ltn/coupling/overlap_quadrature.h>
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
 #include <ltn/nonlocal/particle_diffusion.h>
@@ -273,39 +272,19 @@ namespace ltn
             record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
             if (data.exact_solution)
               {
-                // A missing model's errors are NaN, written as null.
-                const ErrorNorms none{std::numeric_limits<double>::quiet_NaN(),
-                                      std::numeric_limits<double>::quiet_NaN()};
-                const auto      &region = geometry.nonlocal_region;
-                const auto       tol    = geometry.tolerance();
-                const auto       local_field =
-                  local ?
-                          local->get_model().ghosted(solution.fields[local_model]) :
-                          TrilinosWrappers::MPI::Vector();
-                record.has_errors = true;
-                record.nonlocal_errors =
+                const ErrorNorms nonlocal_errors =
                   nonlocal ? nonlocal->errors(solution.fields[nonlocal_model],
                                               *data.exact_solution) :
-                             none;
-                record.local_errors =
-                  local ?
-                    field_errors<dim>(local->get_dof_handler(),
-                                      local_field,
-                                      *data.exact_solution,
-                                      [](const Point<dim> &) { return true; }) :
-                    none;
-                // The LtN solution: u_n on Omega_n, u_l on the rest.
-                record.coupled_errors =
-                  nonlocal ? record.nonlocal_errors : ErrorNorms();
-                if (local)
-                  record.coupled_errors.add(
-                    field_errors<dim>(local->get_dof_handler(),
-                                      local_field,
-                                      *data.exact_solution,
-                                      [&](const Point<dim> &p) {
-                                        return !nonlocal ||
-                                               !region.contains(p, tol);
-                                      }));
+                             ErrorNorms();
+                record_errors<dim>(nonlocal ? &nonlocal_errors : nullptr,
+                                   local ? &local->get_dof_handler() : nullptr,
+                                   local ? local->get_model().ghosted(
+                                             solution.fields[local_model]) :
+                                           TrilinosWrappers::MPI::Vector(),
+                                   *data.exact_solution,
+                                   geometry.nonlocal_region,
+                                   geometry.tolerance(),
+                                   record);
               }
             timer.leave_subsection();
 

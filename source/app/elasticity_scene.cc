@@ -302,34 +302,17 @@ namespace ltn
                       TrilinosWrappers::MPI::Vector();
             if (f.exact_solution)
               {
-                const ErrorNorms none{std::numeric_limits<double>::quiet_NaN(),
-                                      std::numeric_limits<double>::quiet_NaN()};
-                const auto      &region = geometry.nonlocal_region;
-                const auto       tol    = geometry.tolerance();
-                record.has_errors       = true;
-                record.nonlocal_errors =
+                const ErrorNorms nonlocal_errors =
                   nonlocal ? nonlocal->errors(solution.fields[nonlocal_model],
                                               *f.exact_solution) :
-                             none;
-                record.local_errors =
-                  local ?
-                    field_errors<dim>(local->get_dof_handler(),
-                                      local_field,
-                                      *f.exact_solution,
-                                      [](const Point<dim> &) { return true; }) :
-                    none;
-                // The LtN solution: u_n on Omega_n, u_l on the rest.
-                record.coupled_errors =
-                  nonlocal ? record.nonlocal_errors : ErrorNorms();
-                if (local)
-                  record.coupled_errors.add(
-                    field_errors<dim>(local->get_dof_handler(),
-                                      local_field,
-                                      *f.exact_solution,
-                                      [&](const Point<dim> &p) {
-                                        return !nonlocal ||
-                                               !region.contains(p, tol);
-                                      }));
+                             ErrorNorms();
+                record_errors<dim>(nonlocal ? &nonlocal_errors : nullptr,
+                                   local ? &local->get_dof_handler() : nullptr,
+                                   local_field,
+                                   *f.exact_solution,
+                                   geometry.nonlocal_region,
+                                   geometry.tolerance(),
+                                   record);
               }
 
             JsonValue          mechanics = JsonValue::object();

@@ -1,7 +1,9 @@
 #include <ltn/app/level_solve.h>
+#include <ltn/base/field_errors.h>
 #include <ltn/coupling/model_solver.h>
 
 #include <cmath>
+#include <limits>
 
 namespace ltn
 {
@@ -53,6 +55,36 @@ namespace ltn
 
 
 
+  template <int dim>
+  void
+  record_errors(const ErrorNorms                    *nonlocal_errors,
+                const DoFHandler<dim>               *local_dofs,
+                const TrilinosWrappers::MPI::Vector &local_field,
+                const Function<dim>                 &exact,
+                const Box<dim>                      &nonlocal_region,
+                const double                         tolerance,
+                LevelRecord                         &record)
+  {
+    const ErrorNorms none{std::numeric_limits<double>::quiet_NaN(),
+                          std::numeric_limits<double>::quiet_NaN()};
+    record.has_errors      = true;
+    record.nonlocal_errors = nonlocal_errors ? *nonlocal_errors : none;
+    record.local_errors =
+      local_dofs ? field_errors<dim>(*local_dofs,
+                                     local_field,
+                                     exact,
+                                     [](const Point<dim> &) { return true; }) :
+                   none;
+    record.coupled_errors = nonlocal_errors ? *nonlocal_errors : ErrorNorms();
+    if (local_dofs)
+      record.coupled_errors.add(field_errors<dim>(
+        *local_dofs, local_field, exact, [&](const Point<dim> &p) {
+          return !nonlocal_errors || !nonlocal_region.contains(p, tolerance);
+        }));
+  }
+
+
+
   const std::vector<std::string> &
   level_phases()
   {
@@ -79,6 +111,19 @@ namespace ltn
                                     entry == times.end() ? 0. : entry->second);
       }
   }
+
+#define LTN_INSTANTIATE(dim)                                         \
+  template void record_errors(const ErrorNorms *,                    \
+                              const DoFHandler<dim> *,               \
+                              const TrilinosWrappers::MPI::Vector &, \
+                              const Function<dim> &,                 \
+                              const Box<dim> &,                      \
+                              double,                                \
+                              LevelRecord &);
+  LTN_INSTANTIATE(1)
+  LTN_INSTANTIATE(2)
+  LTN_INSTANTIATE(3)
+#undef LTN_INSTANTIATE
 
   template CouplingSolution
   solve_level(const DiscreteModel *,

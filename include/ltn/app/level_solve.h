@@ -1,12 +1,16 @@
 #pragma once
 
+#include <deal.II/base/function.h>
 #include <deal.II/base/timer.h>
+
+#include <deal.II/dofs/dof_handler.h>
 
 #include <ltn/base/discrete_model.h>
 #include <ltn/coupling/coupling_parameters.h>
 #include <ltn/coupling/coupling_system.h>
 #include <ltn/coupling/overlap_quadrature.h>
 #include <ltn/output/run_summary.h>
+#include <ltn/scene/geometry.h>
 
 #include <string>
 #include <vector>
@@ -29,6 +33,24 @@ namespace ltn
               const OverlapQuadrature<dim> &overlap,
               const CouplingParameters     &parameters,
               LevelRecord                  &record);
+
+  /**
+   * Record the errors of a level against @p exact: the nonlocal model's
+   * (@p nonlocal_errors, null when the scene has none), the local model's
+   * over its whole mesh (@p local_dofs null when none; @p local_field
+   * ghosted), and those of the coupled solution, `u_n` on @p nonlocal_region
+   * and `u_l` on the rest. A missing model's errors are NaN (null in the
+   * summary).
+   */
+  template <int dim>
+  void
+  record_errors(const ErrorNorms                    *nonlocal_errors,
+                const DoFHandler<dim>               *local_dofs,
+                const TrilinosWrappers::MPI::Vector &local_field,
+                const Function<dim>                 &exact,
+                const Box<dim>                      &nonlocal_region,
+                const double                         tolerance,
+                LevelRecord                         &record);
 
   /** The phases every scene reports, in order. */
   const std::vector<std::string> &
