@@ -9,7 +9,6 @@
 #include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/output/field_output.h>
 #include <ltn/output/nonlocal_output.h>
-#include <ltn/scene/crack.h>
 #include <ltn/scene/elasticity_data.h>
 
 #include <cmath>
@@ -106,7 +105,7 @@ namespace ltn
     const double h0 = discretization.mesh_size(0);
     // The largest horizon of the study is on the coarsest level.
     const double eps0 = nonlocal_parameters.horizon(h0);
-    geometry.validate(h0, eps0);
+    geometry.validate(h0, eps0, eps0);
 
     if constexpr (dim > 1)
       if (geometry.has_nonlocal_model())
@@ -115,10 +114,6 @@ namespace ltn
                                                h0);
     // What only elasticity scenes use must not be set here.
     ElasticityData::check_unused(prm);
-    check_input(crack_corners_text(prm).empty(),
-                "Cracks/Corners",
-                crack_corners_text(prm),
-                "empty: elasticity scenes only (Model = elasticity)");
 
     check_input(!local_parameters.dirichlet_faces.empty(),
                 "Local model/Dirichlet boundaries",

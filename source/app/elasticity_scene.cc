@@ -23,8 +23,11 @@ namespace ltn
     /** "x=0.5, y=1" into (direction, coordinate) pairs. */
     template <int dim>
     std::vector<std::pair<unsigned int, double>>
-    parse_section_planes(const std::string &text, const Box<dim> &body)
+    parse_section_planes(const std::string   &text,
+                         const Geometry<dim> &geometry,
+                         const double         h)
     {
+      const Box<dim>                              &body = geometry.body;
       std::vector<std::pair<unsigned int, double>> planes;
       const std::string parameter = "Postprocess/Section planes";
       for (const std::string &item : Utilities::split_string_list(text))
@@ -38,7 +41,9 @@ namespace ltn
           bool              ok    = d < dim;
           try
             {
-              c = ok ? std::stod(parts[1]) : 0;
+              std::size_t end = 0;
+              c               = ok ? std::stod(parts[1], &end) : 0;
+              ok              = ok && end == parts[1].size();
             }
           catch (const std::exception &)
             {
@@ -56,6 +61,30 @@ namespace ltn
                       "planes that cut the body, strictly between " +
                         to_string(body.lower[d]) + " and " +
                         to_string(body.upper[d]));
+          const double cells = (c - body.lower[d]) / h;
+          check_input(std::abs(cells - std::round(cells)) < 1e-8 * cells,
+                      parameter,
+                      item,
+                      "planes of mesh faces: coordinates at whole multiples "
+                      "of the mesh size " +
+                        to_string(h) + " from the body's lower corner");
+          check_input(geometry.has_local_model(),
+                      parameter,
+                      item,
+                      "no planes: they are measured on the local model, "
+                      "which a `nonlocal only` scene does not have");
+          // The local mesh has a hole where only the nonlocal model lives:
+          // a plane through it would miss part of the force.
+          const Box<dim> hole = geometry.shrunk_nonlocal_region();
+          check_input(!geometry.has_nonlocal_model() ||
+                        c <= hole.lower[d] + geometry.tolerance() ||
+                        c >= hole.upper[d] - geometry.tolerance(),
+                      parameter,
+                      item,
+                      "planes that the local mesh covers whole: outside " +
+                        to_string(hole.lower[d]) + " < " + "xyz"[d] + " < " +
+                        to_string(hole.upper[d]) +
+                        ", where only the nonlocal model lives");
           planes.emplace_back(d, c);
         }
       return planes;
@@ -128,22 +157,45 @@ namespace ltn
     const std::string planes = prm.get("Section planes");
     reference_crack_opening  = prm.get("Reference crack opening");
     prm.leave_subsection();
-    section_planes = parse_section_planes<dim>(planes, geometry.body);
 
     const double h0 = discretization.mesh_size(0);
     // LPS reaches two horizons: the collar must hold the dilatations'
     // neighbourhoods of the particles next to Omega_n.
     const double eps0 = nonlocal_parameters.horizon(h0);
-    geometry.validate(h0, 2 * eps0);
+    // The outermost collar particles lie two stencil radii R = round(eps/h_p)
+    // out, centres (2 R - 1/2) h_p from Omega_n: more than 2 eps when eps/h_p
+    // is just above a half-integer.
+    const double spacing0 = nonlocal_parameters.particle_spacing(h0);
+    const double radius   = std::floor(eps0 / spacing0 + 0.5);
+    geometry.validate(h0,
+                      std::max(2 * eps0, (2 * radius - 0.5) * spacing0),
+                      eps0);
     if (geometry.has_nonlocal_model())
       nonlocal_parameters.validate_particles(geometry,
                                              local_parameters.degree,
                                              h0);
+    section_planes = parse_section_planes<dim>(planes, geometry, h0);
     check_input(!local_parameters.dirichlet_faces.empty(),
                 "Local model/Dirichlet boundaries",
                 "",
                 "at least one face: with tractions alone the displacement "
                 "is only determined up to a rigid motion");
+    // Rigid translations must be held: each component fixed on some face.
+    for (unsigned int component = 0; component < dim; ++component)
+      {
+        bool fixed = false;
+        for (const unsigned int face : local_parameters.dirichlet_faces)
+          fixed =
+            fixed || local_parameters.dirichlet_mask(face, dim)[component];
+        check_input(fixed || !geometry.has_local_model(),
+                    "Local model/Dirichlet components",
+                    local_parameters.dirichlet_components_text,
+                    std::string("a Dirichlet condition on the ") +
+                      "xyz"[component] +
+                      " displacement on some face: without one the body "
+                      "can move freely along " +
+                      "xyz"[component] + " and the system is singular");
+      }
     // Nonlocal Neumann conditions cannot be prescribed: where Omega_n
     // touches the body's boundary, its collar needs the volume constraint
     // of every component.
@@ -398,17 +450,24 @@ namespace ltn
                             norm += r * r;
                           }
                       }
-                    report << "  crack " << k << ": opening at "
-                           << opening.points.size() << " particle pairs, max "
-                           << max;
-                    if (reference)
+                    const bool sampled  = !opening.points.empty();
+                    const bool compared = reference && sampled && norm > 0;
+                    report << "  crack " << k << ": ";
+                    if (sampled)
+                      report << "opening at " << opening.points.size()
+                             << " particle pairs, max " << max;
+                    else
+                      report << "not measured: no particles face each other "
+                                "across it half a spacing away";
+                    if (compared)
                       report << ", relative L2 difference to the reference "
                              << std::sqrt(difference / norm);
                     report << "\n";
-                    entry["points"]      = points;
-                    entry["opening"]     = values;
-                    entry["max_opening"] = max;
-                    if (reference)
+                    entry["points"]  = points;
+                    entry["opening"] = values;
+                    entry["max_opening"] =
+                      sampled ? JsonValue(max) : JsonValue();
+                    if (compared)
                       entry["relative_l2_difference_to_reference"] =
                         std::sqrt(difference / norm);
                     openings.push_back(entry);

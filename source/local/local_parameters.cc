@@ -28,8 +28,9 @@ namespace ltn
                         "nonlocal region touches them, the volume constraint "
                         "on its physical collar). The other faces of the "
                         "local region on the body's boundary get the Neumann "
-                        "condition du/dn = `Problem data/Boundary gradient` "
-                        ". n.");
+                        "condition: du/dn = `Problem data/Boundary gradient` "
+                        ". n in diffusion, the traction `Problem data/"
+                        "Traction` - `Pressure` n in elasticity.");
       prm.declare_entry("Dirichlet components",
                         "",
                         Patterns::Anything(),

@@ -132,9 +132,11 @@ namespace ltn
         LatticeIndex neighbour = index;
         for (unsigned int d = 0; d < dim; ++d)
           neighbour[d] += offsets[k][d];
+        // The neighbour's own position, so that both ends of a bond test
+        // the same segment.
         intact[k] =
           lattice.number(neighbour) != ParticleLattice<dim>::invalid &&
-          !(near && is_cut(x, x + bonds[k]));
+          !(near && is_cut(x, lattice.position(neighbour)));
         if (intact[k])
           m += weights[k] * bonds[k].norm_square();
       }
@@ -368,15 +370,27 @@ namespace ltn
   ParticleElasticity<dim>::owned_broken_bond_fractions() const
   {
     std::vector<double> result;
-    const auto         &bonds = stencil.bonds();
     for (const auto n : owned_particles)
       {
         const Point<dim> x      = lattice.position(lattice.index(n));
         unsigned int     broken = 0;
         if (near_crack(x))
-          for (const auto &xi : bonds)
-            broken += is_cut(x, x + xi) ? 1 : 0;
-        result.push_back(static_cast<double>(broken) / bonds.size());
+          {
+            std::vector<bool> intact;
+            intact_bonds(lattice.index(n), intact);
+            for (std::size_t k = 0; k < intact.size(); ++k)
+              {
+                LatticeIndex neighbour = lattice.index(n);
+                for (unsigned int d = 0; d < dim; ++d)
+                  neighbour[d] += stencil.offsets()[k][d];
+                // Only bonds to particles that exist can be broken.
+                broken += !intact[k] && lattice.number(neighbour) !=
+                                          ParticleLattice<dim>::invalid ?
+                            1 :
+                            0;
+              }
+          }
+        result.push_back(static_cast<double>(broken) / stencil.bonds().size());
       }
     return result;
   }

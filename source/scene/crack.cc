@@ -159,22 +159,13 @@ namespace ltn
 
 
 
-  std::string
-  crack_corners_text(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Cracks");
-    const std::string text = prm.get("Corners");
-    prm.leave_subsection();
-    return text;
-  }
-
-
-
   template <int dim>
   void
   CrackSet<dim>::parse_parameters(ParameterHandler &prm)
   {
-    const std::string text = crack_corners_text(prm);
+    prm.enter_subsection("Cracks");
+    const std::string text = prm.get("Corners");
+    prm.leave_subsection();
     cracks.clear();
     for (const std::string &item : Utilities::split_string_list(text, ';'))
       {

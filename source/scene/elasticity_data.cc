@@ -3,6 +3,9 @@
 #include <ltn/base/input_error.h>
 #include <ltn/scene/elasticity_data.h>
 
+#include <array>
+#include <vector>
+
 namespace ltn
 {
   void
@@ -70,17 +73,29 @@ namespace ltn
   void
   ElasticityData::check_unused(ParameterHandler &prm)
   {
-    prm.enter_subsection("Problem data");
-    for (const std::string name : {"Body force", "Traction"})
-      check_input(prm.get(name).empty(),
-                  "Problem data/" + name,
-                  prm.get(name),
-                  "empty: elasticity scenes only (Model = elasticity)");
-    check_input(prm.get("Pressure") == "0",
-                "Problem data/Pressure",
-                prm.get("Pressure"),
-                "0: elasticity scenes only (Model = elasticity)");
-    prm.leave_subsection();
+    // Each elasticity-only entry with its default: a diffusion scene that
+    // sets one would silently ignore it.
+    const std::vector<std::array<std::string, 3>> entries = {
+      {{"Problem data", "Body force", ""}},
+      {{"Problem data", "Traction", ""}},
+      {{"Problem data", "Pressure", "0"}},
+      {{"Material", "Young's modulus", "1"}},
+      {{"Material", "Poisson ratio", "0.25"}},
+      {{"Material", "Plane", "strain"}},
+      {{"Cracks", "Corners", ""}},
+      {{"Postprocess", "Section planes", ""}},
+      {{"Postprocess", "Reference crack opening", ""}}};
+    for (const auto &[subsection, name, default_value] : entries)
+      {
+        prm.enter_subsection(subsection);
+        const std::string value = prm.get(name);
+        prm.leave_subsection();
+        check_input(value == default_value,
+                    subsection + "/" + name,
+                    value,
+                    "its default `" + default_value +
+                      "`: elasticity scenes only (Model = elasticity)");
+      }
   }
 
 

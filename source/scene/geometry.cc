@@ -181,7 +181,9 @@ namespace ltn
 
   template <int dim>
   void
-  Geometry<dim>::validate(const double h, const double interaction_range) const
+  Geometry<dim>::validate(const double h,
+                          const double interaction_range,
+                          const double horizon) const
   {
     const double tol = tolerance();
     for (unsigned int d = 0; d < dim; ++d)
@@ -264,11 +266,16 @@ namespace ltn
                                 body.upper[d] - nonlocal_region.upper[d];
           check_input(interaction_range <= room + tol,
                       "Nonlocal model/Horizon",
-                      to_string(interaction_range),
+                      to_string(horizon),
                       "the collar beyond face " + face_name(f) +
                         " of the nonlocal region must fit inside the body: "
-                        "the horizon may be at most " +
-                        to_string(room));
+                        "it is " +
+                        to_string(interaction_range) +
+                        " deep for this horizon (on the coarsest level), "
+                        "the room there is " +
+                        to_string(room) +
+                        " (set by `Horizon`, or by `Horizon to mesh size "
+                        "ratio` times the mesh size)");
         }
 
     // Meshes of size h must resolve every interface of the layout.

@@ -25,8 +25,8 @@ namespace ltn
    * The local elasticity model: the Navier–Cauchy equations
    * `-div sigma(u) = b`, `sigma = lambda tr(eps) I + 2 mu eps`,
    * `eps = (grad u + grad u^T) / 2`, on the local region `Omega_l`
-   * (in 2D plane strain), discretized by `FESystem(FE_Q(p), dim)` on a
-   * LocalMesh.
+   * (in 2D plane strain or plane stress, by the `lambda` given), discretized
+   * by `FESystem(FE_Q(p), dim)` on a LocalMesh.
    *
    * Faces of `Omega_l` on the body's boundary carry physical data: on the
    * faces in `Dirichlet boundaries` the components that

@@ -61,10 +61,6 @@ namespace ltn
     measure() const;
   };
 
-  /** `Cracks/Corners` as written (empty: no crack). */
-  std::string
-  crack_corners_text(ParameterHandler &prm);
-
   /**
    * The cracks of a scene (subsection `Cracks`), parsed and checked against
    * the layout: every crack lies in the nonlocal region.

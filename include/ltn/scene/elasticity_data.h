@@ -39,8 +39,9 @@ namespace ltn
     parse_parameters(ParameterHandler &prm);
 
     /**
-     * An InputError names the first elasticity parameter a diffusion scene
-     * sets.
+     * An InputError names the first elasticity-only parameter (of `Problem
+     * data`, `Material`, `Cracks` or `Postprocess`) that a diffusion scene
+     * sets to other than its default.
      */
     static void
     check_unused(ParameterHandler &prm);

@@ -83,12 +83,15 @@ namespace ltn
 
     /**
      * Check that the layout can be discretized with mesh size @p h (the
-     * coarsest of a study) and interaction range @p interaction_range (the
-     * largest horizon of a study): an InputError names the parameter at
-     * fault otherwise.
+     * coarsest of a study) and a nonlocal model of horizon @p horizon whose
+     * collar is @p interaction_range deep (the horizon for diffusion, two
+     * for LPS), both of the coarsest level: an InputError names the
+     * parameter at fault otherwise.
      */
     void
-    validate(const double h, const double interaction_range) const;
+    validate(const double h,
+             const double interaction_range,
+             const double horizon) const;
 
     /** Does face @p face of `Omega_n` lie on the boundary of the body? */
     bool
