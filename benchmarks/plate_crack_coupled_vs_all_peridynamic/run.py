@@ -1,6 +1,7 @@
 """The cracked plate coupled and all-peridynamic: cost against agreement.
 
 usage: run.py [--ltn build/ltn] [--out DIR] [--repeat N] [--sizes 2 4]
+              [--csv FILE]
 
 Runs parameter_files/lps_plate_2d_crack.prm coupled (both solver methods) and
 with one model, LPS, on the whole plate at the same particle spacing; each
@@ -25,6 +26,7 @@ parser.add_argument("--ltn", default=os.path.join(root, "build", "ltn"))
 parser.add_argument("--out", default=os.path.join(here, "runs"))
 parser.add_argument("--repeat", type=int, default=3)
 parser.add_argument("--sizes", type=float, nargs="+", default=[2, 4])
+parser.add_argument("--csv", default=os.path.join(here, "results.csv"))
 options = parser.parse_args()
 
 scene = os.path.join(root, "parameter_files", "lps_plate_2d_crack.prm")
@@ -100,7 +102,7 @@ for size in options.sizes:
                 f"{crack['relative_l2_difference_to_reference']:.3g}",
         })
         print(rows[-1], flush=True)
-with open(os.path.join(here, "results.csv"), "w", newline="") as f:
+with open(options.csv, "w", newline="") as f:
     writer = csv.DictWriter(f, fieldnames=list(rows[0]))
     writer.writeheader()
     writer.writerows(rows)
