@@ -17,7 +17,7 @@ namespace ltn
 {
   struct DirectSolver::Factorization
   {
-    explicit Factorization(Epetra_CrsMatrix &matrix)
+    Factorization(Epetra_CrsMatrix &matrix, const double pivot_threshold)
       : problem(&matrix, nullptr, nullptr)
     {
       // Pivoting on indefinite (saddle point) matrices needs more workspace
@@ -37,12 +37,7 @@ namespace ltn
           if (mumps != nullptr)
             {
               mumps->SetICNTL(14, extra_workspace);
-              // A stricter pivot threshold than the default 0.01: with it
-              // the 1D optimality systems at eps/h = 1.5 and 2 came out
-              // wrong (relative residuals 1e-3 to 25 after iterative
-              // refinement); at 0.5 they are solved to round-off, in the
-              // same time.
-              mumps->SetCNTL(1, 0.5);
+              mumps->SetCNTL(1, pivot_threshold);
               // Approximate minimum degree with detection of quasi-dense
               // rows (the rows of wide nonlocal stencils): faster than
               // MUMPS's automatic choice on the 2D convergence scene (5.8 s
@@ -86,15 +81,17 @@ namespace ltn
 
 
   DirectSolver::DirectSolver(const TrilinosWrappers::SparseMatrix &matrix,
-                             const bool with_transpose)
+                             const bool   with_transpose,
+                             const double pivot_threshold)
   {
     auto &epetra = const_cast<Epetra_CrsMatrix &>(matrix.trilinos_matrix());
-    forward      = std::make_unique<Factorization>(epetra);
+    forward      = std::make_unique<Factorization>(epetra, pivot_threshold);
     if (with_transpose)
       {
         transposer = std::make_unique<EpetraExt::RowMatrix_Transpose>();
         adjoint    = std::make_unique<Factorization>(
-          dynamic_cast<Epetra_CrsMatrix &>((*transposer)(epetra)));
+          dynamic_cast<Epetra_CrsMatrix &>((*transposer)(epetra)),
+          pivot_threshold);
       }
   }
 

@@ -26,9 +26,14 @@ namespace ltn
   class DirectSolver
   {
   public:
-    /** Factorize @p matrix, and with @p with_transpose its transpose. */
+    /**
+     * Factorize @p matrix, and with @p with_transpose its transpose, with
+     * MUMPS's relative pivot threshold @p pivot_threshold (a pivot must be
+     * at least this fraction of the largest entry of its column).
+     */
     DirectSolver(const TrilinosWrappers::SparseMatrix &matrix,
-                 const bool                            with_transpose);
+                 const bool                            with_transpose,
+                 const double                          pivot_threshold = 0.5);
 
     ~DirectSolver();
 
