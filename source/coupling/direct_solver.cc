@@ -89,9 +89,10 @@ namespace ltn
     if (with_transpose)
       {
         transposer = std::make_unique<EpetraExt::RowMatrix_Transpose>();
-        adjoint    = std::make_unique<Factorization>(
-          dynamic_cast<Epetra_CrsMatrix &>((*transposer)(epetra)),
-          pivot_threshold);
+        adjoint =
+          std::make_unique<Factorization>(dynamic_cast<Epetra_CrsMatrix &>(
+                                            (*transposer)(epetra)),
+                                          pivot_threshold);
       }
   }
 
