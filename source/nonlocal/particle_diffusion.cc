@@ -127,11 +127,7 @@ namespace ltn
   DofRole
   ParticleDiffusion<dim>::role(const LatticeIndex &index) const
   {
-    return lattice.inside(index) ? DofRole::free :
-           geometry.body.contains(lattice.position(index),
-                                  geometry.tolerance()) ?
-                                   DofRole::control :
-                                   DofRole::fixed;
+    return lattice.role(index, geometry);
   }
 
 

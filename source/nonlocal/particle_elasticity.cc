@@ -314,11 +314,7 @@ namespace ltn
   DofRole
   ParticleElasticity<dim>::role(const LatticeIndex &index) const
   {
-    return lattice.inside(index) ? DofRole::free :
-           geometry.body.contains(lattice.position(index),
-                                  geometry.tolerance()) ?
-                                   DofRole::control :
-                                   DofRole::fixed;
+    return lattice.role(index, geometry);
   }
 
 

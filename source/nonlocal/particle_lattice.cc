@@ -151,6 +151,19 @@ namespace ltn
     return true;
   }
 
+
+
+  template <int dim>
+  DofRole
+  ParticleLattice<dim>::role(const LatticeIndex  &index,
+                             const Geometry<dim> &geometry) const
+  {
+    return inside(index) ? DofRole::free :
+           geometry.body.contains(position(index), geometry.tolerance()) ?
+                           DofRole::control :
+                           DofRole::fixed;
+  }
+
   template class ParticleLattice<2>;
   template class ParticleLattice<3>;
 } // namespace ltn

@@ -3,6 +3,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
+#include <ltn/base/discrete_model.h>
 #include <ltn/scene/geometry.h>
 
 #include <array>
@@ -56,6 +57,14 @@ namespace ltn
     /** Is the particle in `Omega_n` (not in its collar)? */
     bool
     inside(const LatticeIndex &index) const;
+
+    /**
+     * The role of the particle at @p index in a nonlocal model on
+     * @p geometry: free in `Omega_n`, a control in the collar inside the
+     * body, fixed (volume constraint) outside it.
+     */
+    DofRole
+    role(const LatticeIndex &index, const Geometry<dim> &geometry) const;
 
     /**
      * Call `f(index, number)` for every particle whose position lies in the
