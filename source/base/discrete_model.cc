@@ -30,6 +30,43 @@ namespace ltn
 
 
 
+  void
+  DiscreteModel::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                       const TrilinosWrappers::MPI::Vector &src) const
+  {
+    if (matrix_free)
+      matrix_free->vmult(dst, src);
+    else
+      matrix.vmult(dst, src);
+  }
+
+
+
+  void
+  DiscreteModel::Tvmult(TrilinosWrappers::MPI::Vector       &dst,
+                        const TrilinosWrappers::MPI::Vector &src) const
+  {
+    if (matrix_free)
+      matrix_free->Tvmult(dst, src);
+    else
+      matrix.Tvmult(dst, src);
+  }
+
+
+
+  std::size_t
+  DiscreteModel::memory_consumption() const
+  {
+    const auto bytes = [](const TrilinosWrappers::SparseMatrix &m) {
+      return m.m() == 0 ? std::size_t(0) : m.memory_consumption();
+    };
+    return bytes(matrix) + bytes(surrogate) +
+           (matrix_free ? matrix_free->memory_consumption() : 0) +
+           rhs.memory_consumption();
+  }
+
+
+
   types::global_dof_index
   DiscreteModel::n_controls() const
   {

@@ -1,6 +1,6 @@
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-
 #include <ltn/base/partition.h>
+#include <ltn/nonlocal/lattice_operator.h>
+#include <ltn/nonlocal/lattice_surrogate.h>
 #include <ltn/nonlocal/particle_diffusion.h>
 
 #include <cmath>
@@ -38,54 +38,80 @@ namespace ltn
 
   template <int dim>
   void
-  ParticleDiffusion<dim>::assemble(const Function<dim> &rhs,
-                                   const Function<dim> &volume_data)
+  ParticleDiffusion<dim>::particle_rows(const types::global_dof_index i,
+                                        ParticleRows &rows) const
   {
     const auto &offsets      = stencil.offsets();
     const auto &coefficients = stencil.coefficients();
-    const auto  n            = lattice.n_particles();
-
-    // The row of particle i: its own number first, then its neighbours'.
-    std::vector<types::global_dof_index> columns;
-    std::vector<double>                  values;
-    const auto make_row = [&](const types::global_dof_index i) {
-      const LatticeIndex index = lattice.index(i);
-      columns.assign(1, i);
-      values.assign(1, 1.);
-      if (!lattice.inside(index))
-        return;
-      values[0] = 0;
-      for (std::size_t k = 0; k < offsets.size(); ++k)
-        {
-          LatticeIndex neighbour = index;
-          for (unsigned int d = 0; d < dim; ++d)
-            neighbour[d] += offsets[k][d];
-          const auto j = lattice.number(neighbour);
-          Assert(j != ParticleLattice<dim>::invalid, ExcInternalError());
-          columns.push_back(j);
-          values.push_back(-2 * coefficients[k]);
-          values[0] += 2 * coefficients[k];
-        }
-    };
-
-    // One pass for the pattern of the owned rows and the ghosts they reach.
-    DynamicSparsityPattern dsp(n, n, model.owned);
-    model.relevant = model.owned;
-    for (const auto i : model.owned)
+    rows.resize(1);
+    auto &row = rows[0];
+    row.assign(1, {i, 1.});
+    const LatticeIndex index = lattice.index(i);
+    if (!lattice.inside(index))
+      return;
+    row[0].second = 0;
+    for (std::size_t k = 0; k < offsets.size(); ++k)
       {
-        make_row(i);
-        std::sort(columns.begin(), columns.end());
-        dsp.add_entries(i, columns.begin(), columns.end(), true);
-        model.relevant.add_indices(columns.begin(), columns.end());
+        LatticeIndex neighbour = index;
+        for (unsigned int d = 0; d < dim; ++d)
+          neighbour[d] += offsets[k][d];
+        const auto j = lattice.number(neighbour);
+        Assert(j != ParticleLattice<dim>::invalid, ExcInternalError());
+        row.emplace_back(j, -2 * coefficients[k]);
+        row[0].second += 2 * coefficients[k];
       }
-    model.relevant.compress();
-    model.matrix.reinit(model.owned, model.owned, dsp, model.communicator);
-    model.rhs = model.new_vector();
+  }
 
+
+
+  template <int dim>
+  void
+  ParticleDiffusion<dim>::assemble(const Function<dim> &rhs,
+                                   const Function<dim> &volume_data,
+                                   const bool           matrix_free)
+  {
+    const auto rows_of = [this](const types::global_dof_index i,
+                                ParticleRows &rows) { particle_rows(i, rows); };
+    if (matrix_free)
+      {
+        // Every particle of Omega_n has the stencil's row.
+        const auto op = std::make_shared<LatticeOperator<dim>>(
+          lattice,
+          stencil.offsets(),
+          1,
+          model.owned,
+          [this](const LatticeIndex &index) { return lattice.inside(index); },
+          rows_of,
+          model.communicator);
+        model.relevant    = op->relevant_dofs();
+        model.matrix_free = op;
+        model.matrix.clear();
+      }
+    else
+      {
+        model.matrix_free.reset();
+        assemble_rows(model.owned, 1, rows_of, model);
+      }
+
+    double diagonal = 0;
+    for (const double a : stencil.coefficients())
+      diagonal += 2 * a;
+    assemble_lattice_surrogate<dim>(
+      lattice,
+      model.owned,
+      1,
+      1,
+      diagonal,
+      [](const Point<dim> &, const Point<dim> &) { return false; },
+      model);
+    model.eliminated = IndexSet(model.owned.size());
+    model.constant_modes.assign(1,
+                                std::vector<bool>(model.owned.n_elements(),
+                                                  true));
+
+    model.rhs = model.new_vector();
     for (const auto i : model.owned)
       {
-        make_row(i);
-        model.matrix.set(i, columns.size(), columns.data(), values.data());
         const Point<dim> x = lattice.position(lattice.index(i));
         switch (model.role(i))
           {
@@ -99,7 +125,6 @@ namespace ltn
               break;
           }
       }
-    model.matrix.compress(VectorOperation::insert);
     model.rhs.compress(VectorOperation::insert);
   }
 

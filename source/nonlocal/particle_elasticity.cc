@@ -1,6 +1,7 @@
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-
 #include <ltn/base/partition.h>
+#include <ltn/nonlocal/lattice_operator.h>
+#include <ltn/nonlocal/lattice_rows.h>
+#include <ltn/nonlocal/lattice_surrogate.h>
 #include <ltn/nonlocal/particle_elasticity.h>
 
 #include <algorithm>
@@ -61,16 +62,7 @@ namespace ltn
           else if (r == DofRole::fixed)
             model.fixed.add_index(dof(n, c));
         // The dilatation is an unknown only where its sum is complete.
-        bool complete = true;
-        for (const auto &o : stencil.offsets())
-          {
-            LatticeIndex neighbour = index;
-            for (unsigned int d = 0; d < dim; ++d)
-              neighbour[d] += o[d];
-            complete = complete && lattice.number(neighbour) !=
-                                     ParticleLattice<dim>::invalid;
-          }
-        if (!complete)
+        if (!complete(index))
           model.fixed.add_index(dof(n, dim));
       }
     model.controls.compress();
@@ -99,6 +91,23 @@ namespace ltn
       if (cracks[k].cuts(x, y, tol))
         return true;
     return false;
+  }
+
+
+
+  template <int dim>
+  bool
+  ParticleElasticity<dim>::complete(const LatticeIndex &index) const
+  {
+    for (const auto &o : stencil.offsets())
+      {
+        LatticeIndex neighbour = index;
+        for (unsigned int d = 0; d < dim; ++d)
+          neighbour[d] += o[d];
+        if (lattice.number(neighbour) == ParticleLattice<dim>::invalid)
+          return false;
+      }
+    return true;
   }
 
 
@@ -146,132 +155,174 @@ namespace ltn
 
 
   template <int dim>
+  bool
+  ParticleElasticity<dim>::shares_stencil(const LatticeIndex &index) const
+  {
+    if (!lattice.inside(index))
+      return false;
+    // Neither the particle's bonds nor its neighbours' can be cut.
+    const Point<dim> x = lattice.position(index);
+    for (const auto &box : crack_neighbourhoods)
+      {
+        bool near = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          near = near && x[d] >= box.lower[d] - eps - spacing &&
+                 x[d] <= box.upper[d] + eps + spacing;
+        if (near)
+          return false;
+      }
+    return true;
+  }
+
+
+
+  template <int dim>
   void
-  ParticleElasticity<dim>::assemble(const Function<dim> &body_force,
-                                    const Function<dim> &volume_data)
+  ParticleElasticity<dim>::particle_rows(const types::global_dof_index n,
+                                         Rows &rows) const
   {
     const auto &offsets = stencil.offsets();
     const auto &weights = stencil.weights();
     const auto &bonds   = stencil.bonds();
-    const auto  n_dofs  = model.owned.size();
     // The dilatation's rows are scaled to the size of the displacement's.
     const double theta_scale = coefficient_B / dim;
 
-    // The rows of particle n: entries (column, value) per component.
-    std::array<std::vector<std::pair<types::global_dof_index, double>>,
-               n_components>
-                      rows;
-    std::vector<bool> intact, neighbour_intact;
-    const auto        make_rows = [&](const types::global_dof_index n) {
-      for (auto &row : rows)
-        row.clear();
-      const LatticeIndex index = lattice.index(n);
-      const bool         fixed_theta = model.fixed.is_element(dof(n, dim));
-      const bool         free_u = lattice.inside(index);
-      for (unsigned int c = 0; c < dim; ++c)
-        if (!free_u)
-          rows[c].emplace_back(dof(n, c), 1.);
-      if (fixed_theta)
-        rows[dim].emplace_back(dof(n, dim), 1.);
-      if (!free_u && fixed_theta)
-        return;
+    rows.resize(n_components);
+    for (auto &row : rows)
+      row.clear();
+    const LatticeIndex index       = lattice.index(n);
+    const bool         fixed_theta = !complete(index);
+    const bool         free_u      = lattice.inside(index);
+    for (unsigned int c = 0; c < dim; ++c)
+      if (!free_u)
+        rows[c].emplace_back(dof(n, c), 1.);
+    if (fixed_theta)
+      rows[dim].emplace_back(dof(n, dim), 1.);
+    if (!free_u && fixed_theta)
+      return;
 
-      const double m_i = intact_bonds(index, intact);
-      if (!fixed_theta)
-        rows[dim].emplace_back(dof(n, dim), theta_scale);
-      for (std::size_t k = 0; k < offsets.size(); ++k)
-        if (intact[k])
-          {
-            LatticeIndex neighbour = index;
-            for (unsigned int d = 0; d < dim; ++d)
-              neighbour[d] += offsets[k][d];
-            const auto           j  = lattice.number(neighbour);
-            const Tensor<1, dim> xi = bonds[k];
-            if (!fixed_theta)
+    std::vector<bool> intact, neighbour_intact;
+    const double      m_i = intact_bonds(index, intact);
+    if (!fixed_theta)
+      rows[dim].emplace_back(dof(n, dim), theta_scale);
+    for (std::size_t k = 0; k < offsets.size(); ++k)
+      if (intact[k])
+        {
+          LatticeIndex neighbour = index;
+          for (unsigned int d = 0; d < dim; ++d)
+            neighbour[d] += offsets[k][d];
+          const auto           j  = lattice.number(neighbour);
+          const Tensor<1, dim> xi = bonds[k];
+          if (!fixed_theta)
+            for (unsigned int b = 0; b < dim; ++b)
+              {
+                const double v = theta_scale * dim * weights[k] * xi[b] / m_i;
+                rows[dim].emplace_back(dof(j, b), -v);
+                rows[dim].emplace_back(dof(n, b), v);
+              }
+          if (!free_u)
+            continue;
+          // Neighbours of a particle of Omega_n are complete: away from
+          // cracks their weighted volume is the stencil's.
+          const double m_j = near_crack(lattice.position(neighbour)) ?
+                               intact_bonds(neighbour, neighbour_intact) :
+                               stencil.weighted_volume();
+          const double bond_stiffness =
+            weights[k] * coefficient_B * (1 / m_i + 1 / m_j) / xi.norm_square();
+          for (unsigned int a = 0; a < dim; ++a)
+            {
               for (unsigned int b = 0; b < dim; ++b)
                 {
-                  const double v = theta_scale * dim * weights[k] * xi[b] / m_i;
-                  rows[dim].emplace_back(dof(j, b), -v);
-                  rows[dim].emplace_back(dof(n, b), v);
+                  const double v = bond_stiffness * xi[a] * xi[b];
+                  rows[a].emplace_back(dof(n, b), v);
+                  rows[a].emplace_back(dof(j, b), -v);
                 }
-            if (!free_u)
-              continue;
-            // Neighbours of a particle of Omega_n are complete: away from
-            // cracks their weighted volume is the stencil's.
-            const double m_j = near_crack(lattice.position(neighbour)) ?
-                                        intact_bonds(neighbour, neighbour_intact) :
-                                        stencil.weighted_volume();
-            const double bond_stiffness = weights[k] * coefficient_B *
-                                          (1 / m_i + 1 / m_j) /
-                                          xi.norm_square();
-            for (unsigned int a = 0; a < dim; ++a)
-              {
-                for (unsigned int b = 0; b < dim; ++b)
-                  {
-                    const double v = bond_stiffness * xi[a] * xi[b];
-                    rows[a].emplace_back(dof(n, b), v);
-                    rows[a].emplace_back(dof(j, b), -v);
-                  }
-                rows[a].emplace_back(dof(n, dim),
-                                     -weights[k] * coefficient_A * xi[a] / m_i);
-                rows[a].emplace_back(dof(j, dim),
-                                     -weights[k] * coefficient_A * xi[a] / m_j);
-              }
-          }
-      // One entry per column.
-      for (auto &row : rows)
-        {
-          std::sort(row.begin(), row.end(), [](const auto &x, const auto &y) {
-            return x.first < y.first;
-          });
-          std::size_t last = 0;
-          for (std::size_t e = 1; e < row.size(); ++e)
-            if (row[e].first == row[last].first)
-              row[last].second += row[e].second;
-            else
-              row[++last] = row[e];
-          row.resize(row.empty() ? 0 : last + 1);
+              rows[a].emplace_back(dof(n, dim),
+                                   -weights[k] * coefficient_A * xi[a] / m_i);
+              rows[a].emplace_back(dof(j, dim),
+                                   -weights[k] * coefficient_A * xi[a] / m_j);
+            }
         }
-    };
-
-    // One pass for the pattern of the owned rows and the ghosts they reach.
-    DynamicSparsityPattern               dsp(n_dofs, n_dofs, model.owned);
-    std::vector<types::global_dof_index> columns;
-    model.relevant = model.owned;
-    for (const auto n : owned_particles)
+    // One entry per column.
+    for (auto &row : rows)
       {
-        make_rows(n);
-        for (unsigned int c = 0; c < n_components; ++c)
-          {
-            columns.clear();
-            for (const auto &entry : rows[c])
-              columns.push_back(entry.first);
-            dsp.add_entries(dof(n, c), columns.begin(), columns.end(), true);
-            model.relevant.add_indices(columns.begin(), columns.end());
-          }
+        std::sort(row.begin(), row.end(), [](const auto &x, const auto &y) {
+          return x.first < y.first;
+        });
+        std::size_t last = 0;
+        for (std::size_t e = 1; e < row.size(); ++e)
+          if (row[e].first == row[last].first)
+            row[last].second += row[e].second;
+          else
+            row[++last] = row[e];
+        row.resize(row.empty() ? 0 : last + 1);
       }
-    model.relevant.compress();
-    model.matrix.reinit(model.owned, model.owned, dsp, model.communicator);
-    model.rhs = model.new_vector();
+  }
 
-    std::vector<double> values;
+
+
+  template <int dim>
+  void
+  ParticleElasticity<dim>::assemble(const Function<dim> &body_force,
+                                    const Function<dim> &volume_data,
+                                    const bool           matrix_free)
+  {
+    const auto rows_of = [this](const types::global_dof_index n, Rows &rows) {
+      particle_rows(n, rows);
+    };
+    if (matrix_free)
+      {
+        const auto op = std::make_shared<LatticeOperator<dim>>(
+          lattice,
+          stencil.offsets(),
+          n_components,
+          owned_particles,
+          [this](const LatticeIndex &index) { return shares_stencil(index); },
+          rows_of,
+          model.communicator);
+        model.relevant    = op->relevant_dofs();
+        model.matrix_free = op;
+        model.matrix.clear();
+      }
+    else
+      {
+        model.matrix_free.reset();
+        assemble_rows(owned_particles, n_components, rows_of, model);
+      }
+
+    // The surrogate for AMG: the vector Laplacian on the lattice, scaled to
+    // the diagonal of the displacement rows, without the bonds cracks cut.
+    const double diagonal = [&] {
+      double sum = 0;
+      for (std::size_t k = 0; k < stencil.bonds().size(); ++k)
+        sum += 2 * stencil.weights()[k] * coefficient_B /
+               stencil.weighted_volume() * stencil.bonds()[k][0] *
+               stencil.bonds()[k][0] / stencil.bonds()[k].norm_square();
+      return sum;
+    }();
+    assemble_lattice_surrogate<dim>(
+      lattice,
+      owned_particles,
+      n_components,
+      dim,
+      diagonal,
+      [this](const Point<dim> &x, const Point<dim> &y) {
+        return near_crack(x) && is_cut(x, y);
+      },
+      model);
+    model.eliminated = IndexSet(model.owned.size());
+    for (const auto n : owned_particles)
+      model.eliminated.add_index(dof(n, dim));
+    model.eliminated.compress();
+    model.constant_modes.assign(dim,
+                                std::vector<bool>(model.owned.n_elements()));
+    for (std::size_t i = 0; i < model.owned.n_elements(); ++i)
+      if (i % n_components < dim)
+        model.constant_modes[i % n_components][i] = true;
+
+    model.rhs = model.new_vector();
     for (const auto n : owned_particles)
       {
-        make_rows(n);
-        for (unsigned int c = 0; c < n_components; ++c)
-          {
-            columns.clear();
-            values.clear();
-            for (const auto &entry : rows[c])
-              {
-                columns.push_back(entry.first);
-                values.push_back(entry.second);
-              }
-            model.matrix.set(dof(n, c),
-                             columns.size(),
-                             columns.data(),
-                             values.data());
-          }
         const Point<dim> x = lattice.position(lattice.index(n));
         for (unsigned int c = 0; c < dim; ++c)
           switch (model.role(dof(n, c)))
@@ -286,7 +337,6 @@ namespace ltn
                 break;
             }
       }
-    model.matrix.compress(VectorOperation::insert);
     model.rhs.compress(VectorOperation::insert);
   }
 

@@ -109,6 +109,20 @@ namespace ltn
 
 
   template <int dim>
+  typename ParticleLattice<dim>::Line
+  ParticleLattice<dim>::line(const LatticeIndex &index) const
+  {
+    const std::size_t l = line_of(index);
+    if (l == invalid)
+      return {};
+    return {static_cast<std::int64_t>(line_start[l]) - first_x[l],
+            line_start[l],
+            line_start[l + 1]};
+  }
+
+
+
+  template <int dim>
   typename ParticleLattice<dim>::LatticeIndex
   ParticleLattice<dim>::index(const types::global_dof_index number) const
   {

@@ -6,6 +6,9 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <memory>
+#include <vector>
+
 namespace ltn
 {
   using namespace dealii;
@@ -20,6 +23,29 @@ namespace ltn
     control,
     /** Fixed by physical data (volume constraint or Dirichlet condition). */
     fixed
+  };
+
+  /**
+   * A model's operator `M` applied without an assembled matrix (the
+   * LatticeOperator of particle models): `vmult` and `Tvmult` on vectors
+   * over the model's owned degrees of freedom.
+   */
+  class MatrixFreeOperator
+  {
+  public:
+    virtual ~MatrixFreeOperator() = default;
+
+    virtual void
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src) const = 0;
+
+    virtual void
+    Tvmult(TrilinosWrappers::MPI::Vector       &dst,
+           const TrilinosWrappers::MPI::Vector &src) const = 0;
+
+    /** Bytes this rank holds for the operator. */
+    virtual std::size_t
+    memory_consumption() const = 0;
   };
 
   /**
@@ -44,14 +70,49 @@ namespace ltn
     DiscreteModel &
     operator=(const DiscreteModel &) = delete;
 
-    MPI_Comm                       communicator = MPI_COMM_SELF;
-    IndexSet                       owned;
-    IndexSet                       relevant;
+    MPI_Comm communicator = MPI_COMM_SELF;
+    IndexSet owned;
+    IndexSet relevant;
+    /** `M` assembled; empty when `matrix_free` holds it instead. */
     TrilinosWrappers::SparseMatrix matrix;
-    TrilinosWrappers::MPI::Vector  rhs;
+    /** `M` applied without a matrix, or null. */
+    std::shared_ptr<const MatrixFreeOperator> matrix_free;
+    TrilinosWrappers::MPI::Vector             rhs;
     /** The owned control and fixed degrees of freedom. */
     IndexSet controls;
     IndexSet fixed;
+
+    /**
+     * @name What an iterative solver of the model needs besides `M`.
+     */
+    /** @{ */
+    /**
+     * A sparse matrix close to `M` (spectrally) for algebraic multigrid,
+     * with identity rows at `eliminated`; empty: AMG works on `matrix`.
+     */
+    TrilinosWrappers::SparseMatrix surrogate;
+    /**
+     * The owned degrees of freedom whose block of `M` is diagonal and
+     * which a preconditioner eliminates first (the dilatation of LPS).
+     */
+    IndexSet eliminated;
+    /** The near null space for AMG: per mode, a flag per owned dof. */
+    std::vector<std::vector<bool>> constant_modes;
+    /** @} */
+
+    /** `dst = M src`, assembled or matrix-free. */
+    void
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src) const;
+
+    /** `dst = M^T src`. */
+    void
+    Tvmult(TrilinosWrappers::MPI::Vector       &dst,
+           const TrilinosWrappers::MPI::Vector &src) const;
+
+    /** Bytes this rank holds for `M`, the surrogate and the right side. */
+    std::size_t
+    memory_consumption() const;
 
     /** The role of an owned degree of freedom. */
     DofRole

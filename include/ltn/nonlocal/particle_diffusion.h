@@ -7,6 +7,7 @@
 #include <ltn/base/discrete_model.h>
 #include <ltn/base/field_errors.h>
 #include <ltn/nonlocal/kernel.h>
+#include <ltn/nonlocal/lattice_rows.h>
 #include <ltn/nonlocal/lattice_stencil.h>
 #include <ltn/nonlocal/particle_lattice.h>
 #include <ltn/scene/geometry.h>
@@ -46,9 +47,19 @@ namespace ltn
                       const double         spacing,
                       const MPI_Comm       communicator);
 
-    /** Assemble `-L_h`, the load @p rhs and the volume constraint. */
+    /**
+     * Assemble `-L_h` (its matrix, or with @p matrix_free a
+     * LatticeOperator, and the surrogate for AMG), the load @p rhs and the
+     * volume constraint.
+     */
     void
-    assemble(const Function<dim> &rhs, const Function<dim> &volume_data);
+    assemble(const Function<dim> &rhs,
+             const Function<dim> &volume_data,
+             const bool           matrix_free = false);
+
+    /** The row of particle @p i of the closed model. */
+    void
+    particle_rows(const types::global_dof_index i, ParticleRows &rows) const;
 
     const DiscreteModel &
     get_model() const;

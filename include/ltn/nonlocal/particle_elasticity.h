@@ -6,11 +6,13 @@
 #include <ltn/base/discrete_model.h>
 #include <ltn/base/field_errors.h>
 #include <ltn/nonlocal/kernel.h>
+#include <ltn/nonlocal/lattice_rows.h>
 #include <ltn/nonlocal/particle_lattice.h>
 #include <ltn/nonlocal/peridynamic_stencil.h>
 #include <ltn/scene/crack.h>
 #include <ltn/scene/geometry.h>
 
+#include <utility>
 #include <vector>
 
 namespace ltn
@@ -63,12 +65,30 @@ namespace ltn
                        const std::vector<Crack<dim>> &cracks,
                        const MPI_Comm                 communicator);
 
+    using Rows = ParticleRows;
+
     /**
      * Assemble the model with the body force @p body_force and the volume
-     * constraint @p volume_data (both `dim` components).
+     * constraint @p volume_data (both `dim` components): its matrix, or
+     * with @p matrix_free a LatticeOperator; and the surrogate, the
+     * eliminated dilatations and the rigid translations its iterative
+     * solver needs.
      */
     void
-    assemble(const Function<dim> &body_force, const Function<dim> &volume_data);
+    assemble(const Function<dim> &body_force,
+             const Function<dim> &volume_data,
+             const bool           matrix_free = false);
+
+    /** The row of particle @p n of the closed model, per component. */
+    void
+    particle_rows(const types::global_dof_index n, Rows &rows) const;
+
+    /**
+     * Does the particle at @p index have the row every particle far from
+     * cracks and the collar shares (LatticeOperator)?
+     */
+    bool
+    shares_stencil(const LatticeIndex &index) const;
 
     const DiscreteModel &
     get_model() const;
@@ -143,6 +163,10 @@ namespace ltn
            const Function<dim>                 &exact) const;
 
   private:
+    /** Does the particle at @p index have all its bonds' neighbours? */
+    bool
+    complete(const LatticeIndex &index) const;
+
     /** Is @p x close enough to a crack for one of its bonds to cross it? */
     bool
     near_crack(const Point<dim> &x) const;

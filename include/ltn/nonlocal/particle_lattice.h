@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace ltn
@@ -46,6 +47,22 @@ namespace ltn
     /** The number of the particle at @p index, or `invalid`. */
     types::global_dof_index
     number(const LatticeIndex &index) const;
+
+    /**
+     * A line of the lattice: its particles (fixed `i_1, ..., i_{dim-1}`)
+     * have the consecutive numbers `[begin, end)`, and the one at `i_0` the
+     * number `origin + i_0`.
+     */
+    struct Line
+    {
+      std::int64_t            origin = 0;
+      types::global_dof_index begin  = 0;
+      types::global_dof_index end    = 0;
+    };
+
+    /** The line through @p index (its `i_0` ignored); empty if absent. */
+    Line
+    line(const LatticeIndex &index) const;
 
     /** The lattice index of particle @p number. */
     LatticeIndex

@@ -1,0 +1,111 @@
+#pragma once
+
+#include <deal.II/base/index_set.h>
+
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <ltn/base/discrete_model.h>
+#include <ltn/nonlocal/lattice_rows.h>
+#include <ltn/nonlocal/particle_lattice.h>
+
+#include <array>
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * A particle model's operator without its matrix (doc/discretization.md,
+   * section 15). A particle away from boundaries, collar and cracks has the
+   * same row as every other such particle up to the shift of its numbers:
+   * a dense `n_components x n_components` block per bond offset `o_k` and
+   * one for the particle itself,
+   *
+   *   (M x)_i = C x_i + sum_k B_k x_{i + o_k},
+   *
+   * stored once. Only the other particles' rows are stored, as a sparse
+   * matrix (`own_rows`). Degrees of freedom are numbered particle by
+   * particle, `n_components p + c`.
+   *
+   * `Tvmult` gathers too: `(M^T y)_j = C^T y_j + sum_k B_k^T y_{j - o_k}`
+   * over the shared-stencil particles `j - o_k`, plus `own_rows^T y`. Both
+   * read this rank's particles and the contiguous range of numbers that
+   * their bonds reach, imported once per product.
+   */
+  template <int dim>
+  class LatticeOperator : public MatrixFreeOperator
+  {
+  public:
+    using LatticeIndex = typename ParticleLattice<dim>::LatticeIndex;
+    using Rows         = ParticleRows;
+
+    /**
+     * @param lattice the particles.
+     * @param offsets the bond offsets `o_k`, closed under negation: every
+     *   shared-stencil row reads only these neighbours and the particle.
+     * @param n_components degrees of freedom per particle.
+     * @param owned_particles this rank's particles, a contiguous range.
+     * @param shares_stencil which particles have the shared row.
+     * @param rows_of the row of any particle, for those that do not and
+     *   to read the shared one from.
+     */
+    LatticeOperator(
+      const ParticleLattice<dim>                      &lattice,
+      const std::vector<LatticeIndex>                 &offsets,
+      const unsigned int                               n_components,
+      const IndexSet                                  &owned_particles,
+      const std::function<bool(const LatticeIndex &)> &shares_stencil,
+      const std::function<void(types::global_dof_index, Rows &)> &rows_of,
+      const MPI_Comm                                              communicator);
+
+    void
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src) const override;
+
+    void
+    Tvmult(TrilinosWrappers::MPI::Vector       &dst,
+           const TrilinosWrappers::MPI::Vector &src) const override;
+
+    std::size_t
+    memory_consumption() const override;
+
+    /** The degrees of freedom this rank's rows read (a contiguous range). */
+    const IndexSet &
+    relevant_dofs() const;
+
+    /** The number of particles of all ranks whose rows are stored. */
+    types::global_dof_index
+    n_stored_rows() const;
+
+  private:
+    /**
+     * The shared-stencil part of `M x` (or of `M^T x`) for this rank's
+     * particles, from the values @p x of the relevant range into the
+     * owned values @p y.
+     */
+    template <int n_c, bool transpose>
+    void
+    apply_stencil(const double *x, double *y) const;
+
+    const ParticleLattice<dim>     &lattice;
+    const std::vector<LatticeIndex> offsets;
+    /** The index of the offset `-o_k`. */
+    std::vector<unsigned int> reverse;
+    const unsigned int        n_components;
+    /** This rank's particles `[first, end)`, and the range they reach. */
+    types::global_dof_index first, end, reach_first, reach_end;
+    /** Per particle of the reached range: does it have the shared row? */
+    std::vector<unsigned char> shares;
+    /** `B_k` for every offset, then `C`: row-major blocks. */
+    std::vector<double>                   blocks;
+    TrilinosWrappers::SparseMatrix        own_rows;
+    types::global_dof_index               n_own_rows = 0;
+    IndexSet                              owned_dofs, relevant;
+    MPI_Comm                              communicator;
+    mutable TrilinosWrappers::MPI::Vector ghosted;
+  };
+} // namespace ltn

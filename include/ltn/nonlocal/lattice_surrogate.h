@@ -1,0 +1,43 @@
+#pragma once
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/point.h>
+
+#include <ltn/base/discrete_model.h>
+#include <ltn/nonlocal/particle_lattice.h>
+
+#include <functional>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * The surrogate of a particle model for algebraic multigrid
+   * (doc/discretization.md, section 16): per field component, the
+   * nearest-neighbour Laplacian on the lattice,
+   *
+   *   (L x)_p = diagonal / (2 dim) sum_{q ~ p} (x_p - x_q),
+   *
+   * over the axis neighbours `q` of a particle `p` of `Omega_n` whose bond
+   * no crack cuts (@p is_cut); neighbours in the collar enter as zero
+   * values (the model fixes them by identity rows), so `L` is symmetric.
+   * The rows of the collar and of the components beyond
+   * @p n_field_components (the dilatation) are identity rows. At fixed
+   * `eps / h` the model's operator is spectrally equivalent to it, which
+   * keeps AMG's iteration counts independent of `h`.
+   *
+   * Fills `model.surrogate` over `model.owned`; this rank's
+   * @p owned_particles carry `n_components` degrees of freedom each.
+   */
+  template <int dim>
+  void
+  assemble_lattice_surrogate(
+    const ParticleLattice<dim> &lattice,
+    const IndexSet             &owned_particles,
+    const unsigned int          n_components,
+    const unsigned int          n_field_components,
+    const double                diagonal,
+    const std::function<bool(const Point<dim> &, const Point<dim> &)> &is_cut,
+    DiscreteModel                                                     &model);
+} // namespace ltn

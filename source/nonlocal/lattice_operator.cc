@@ -1,0 +1,340 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <ltn/nonlocal/lattice_operator.h>
+
+#include <algorithm>
+#include <map>
+
+namespace ltn
+{
+  template <int dim>
+  LatticeOperator<dim>::LatticeOperator(
+    const ParticleLattice<dim>                                 &lattice,
+    const std::vector<LatticeIndex>                            &offsets,
+    const unsigned int                                          n_components,
+    const IndexSet                                             &owned_particles,
+    const std::function<bool(const LatticeIndex &)>            &shares_stencil,
+    const std::function<void(types::global_dof_index, Rows &)> &rows_of,
+    const MPI_Comm                                              communicator)
+    : lattice(lattice)
+    , offsets(offsets)
+    , n_components(n_components)
+    , communicator(communicator)
+  {
+    AssertThrow(owned_particles.is_contiguous(), ExcNotImplemented());
+    first = owned_particles.is_empty() ? 0 : *owned_particles.begin();
+    end   = first + owned_particles.n_elements();
+
+    std::map<LatticeIndex, unsigned int> offset_number;
+    for (unsigned int k = 0; k < offsets.size(); ++k)
+      offset_number[offsets[k]] = k;
+    for (const auto &o : offsets)
+      {
+        LatticeIndex minus;
+        for (unsigned int d = 0; d < dim; ++d)
+          minus[d] = -o[d];
+        const auto found = offset_number.find(minus);
+        AssertThrow(found != offset_number.end(),
+                    ExcMessage("the bond offsets are not symmetric"));
+        reverse.push_back(found->second);
+      }
+
+    // The range of numbers the bonds of this rank's particles reach.
+    reach_first = first;
+    reach_end   = end;
+    for (auto p = first; p < end;)
+      {
+        const LatticeIndex index = lattice.index(p);
+        const auto         line  = lattice.line(index);
+        for (const auto &o : offsets)
+          {
+            LatticeIndex neighbour = index;
+            for (unsigned int d = 0; d < dim; ++d)
+              neighbour[d] += o[d];
+            const auto other = lattice.line(neighbour);
+            if (other.begin == other.end)
+              continue;
+            // Particles p..min(line end, end) - 1 reach along this offset
+            // numbers origin + o_0 + i_0, clipped to the other line.
+            const std::int64_t from =
+              other.origin + o[0] +
+              (static_cast<std::int64_t>(p) - line.origin);
+            const std::int64_t to =
+              from + static_cast<std::int64_t>(std::min(line.end, end)) -
+              static_cast<std::int64_t>(p);
+            const std::int64_t lo = std::max<std::int64_t>(from, other.begin);
+            const std::int64_t hi = std::min<std::int64_t>(to, other.end);
+            if (lo < hi)
+              {
+                reach_first =
+                  std::min<types::global_dof_index>(reach_first, lo);
+                reach_end = std::max<types::global_dof_index>(reach_end, hi);
+              }
+          }
+        p = std::min(line.end, end);
+      }
+
+    shares.resize(reach_end - reach_first);
+    for (auto p = reach_first; p < reach_end; ++p)
+      shares[p - reach_first] = shares_stencil(lattice.index(p)) ? 1 : 0;
+
+    // The shared row, read from the first particle that has it.
+    blocks.assign((offsets.size() + 1) * n_components * n_components, 0.);
+    const auto reference = std::find(shares.begin(), shares.end(), 1);
+    Rows       rows(n_components);
+    if (reference != shares.end())
+      {
+        const types::global_dof_index p =
+          reach_first + (reference - shares.begin());
+        const LatticeIndex index = lattice.index(p);
+        rows_of(p, rows);
+        for (unsigned int a = 0; a < n_components; ++a)
+          for (const auto &[column, value] : rows[a])
+            {
+              const LatticeIndex other = lattice.index(column / n_components);
+              LatticeIndex       o;
+              bool               centre = true;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  o[d]   = other[d] - index[d];
+                  centre = centre && o[d] == 0;
+                }
+              const auto found = offset_number.find(o);
+              AssertThrow(centre || found != offset_number.end(),
+                          ExcMessage("a shared row reads a particle that is "
+                                     "not one of its bonds"));
+              const std::size_t k = centre ? offsets.size() : found->second;
+              blocks[(k * n_components + a) * n_components +
+                     column % n_components] += value;
+            }
+      }
+
+    // The rows of the other particles, stored.
+    const types::global_dof_index n_dofs = n_components * lattice.n_particles();
+    owned_dofs                           = IndexSet(n_dofs);
+    owned_dofs.add_range(n_components * first, n_components * end);
+    relevant = IndexSet(n_dofs);
+    relevant.add_range(n_components * reach_first, n_components * reach_end);
+    DynamicSparsityPattern               dsp(n_dofs, n_dofs, owned_dofs);
+    std::vector<types::global_dof_index> columns;
+    std::vector<double>                  values;
+    for (auto p = first; p < end; ++p)
+      if (!shares[p - reach_first])
+        {
+          rows_of(p, rows);
+          for (unsigned int c = 0; c < n_components; ++c)
+            {
+              columns.clear();
+              for (const auto &entry : rows[c])
+                columns.push_back(entry.first);
+              dsp.add_entries(n_components * p + c,
+                              columns.begin(),
+                              columns.end());
+            }
+          ++n_own_rows;
+        }
+    own_rows.reinit(owned_dofs, owned_dofs, dsp, communicator);
+    for (auto p = first; p < end; ++p)
+      if (!shares[p - reach_first])
+        {
+          rows_of(p, rows);
+          for (unsigned int c = 0; c < n_components; ++c)
+            {
+              columns.clear();
+              values.clear();
+              for (const auto &[column, value] : rows[c])
+                {
+                  columns.push_back(column);
+                  values.push_back(value);
+                }
+              own_rows.add(n_components * p + c,
+                           columns.size(),
+                           columns.data(),
+                           values.data());
+            }
+        }
+    own_rows.compress(VectorOperation::add);
+
+    ghosted.reinit(owned_dofs, relevant, communicator);
+    // The products index the imported values by `number - reach_first`.
+    const auto &map = ghosted.trilinos_vector().Map();
+    AssertThrow(
+      relevant.is_empty() ||
+        (map.NumMyElements() == static_cast<int>(relevant.n_elements()) &&
+         map.GID64(0) == static_cast<long long>(n_components * reach_first) &&
+         map.GID64(map.NumMyElements() - 1) ==
+           static_cast<long long>(n_components * reach_end - 1)),
+      ExcInternalError());
+  }
+
+
+
+  template <int dim>
+  template <int n_c, bool transpose>
+  void
+  LatticeOperator<dim>::apply_stencil(const double *x, double *y) const
+  {
+    const unsigned int        n_offsets = offsets.size();
+    std::vector<std::int64_t> origin(n_offsets);
+    std::vector<std::int64_t> lo(n_offsets), hi(n_offsets);
+    const double             *centre = &blocks[n_offsets * n_c * n_c];
+    const unsigned char      *share  = shares.data();
+    const std::int64_t        base   = reach_first;
+    std::array<double, n_c>   sum;
+    for (auto p = first; p < end;)
+      {
+        const LatticeIndex index = lattice.index(p);
+        const auto         line  = lattice.line(index);
+        for (unsigned int k = 0; k < n_offsets; ++k)
+          {
+            LatticeIndex neighbour = index;
+            for (unsigned int d = 0; d < dim; ++d)
+              neighbour[d] += offsets[k][d];
+            const auto other = lattice.line(neighbour);
+            origin[k]        = other.origin + offsets[k][0] - line.origin;
+            lo[k]            = other.begin;
+            hi[k]            = other.end;
+          }
+        const types::global_dof_index line_end = std::min(line.end, end);
+        for (; p < line_end; ++p)
+          {
+            const std::int64_t i  = p;
+            const double      *xi = x + (i - base) * n_c;
+            sum.fill(0.);
+            if (!transpose)
+              {
+                if (share[i - base])
+                  {
+                    for (int a = 0; a < n_c; ++a)
+                      for (int b = 0; b < n_c; ++b)
+                        sum[a] += centre[a * n_c + b] * xi[b];
+                    for (unsigned int k = 0; k < n_offsets; ++k)
+                      {
+                        const double *block = &blocks[k * n_c * n_c];
+                        const double *xj    = x + (origin[k] + i - base) * n_c;
+                        for (int a = 0; a < n_c; ++a)
+                          for (int b = 0; b < n_c; ++b)
+                            sum[a] += block[a * n_c + b] * xj[b];
+                      }
+                  }
+              }
+            else
+              {
+                if (share[i - base])
+                  for (int a = 0; a < n_c; ++a)
+                    for (int b = 0; b < n_c; ++b)
+                      sum[b] += centre[a * n_c + b] * xi[a];
+                for (unsigned int k = 0; k < n_offsets; ++k)
+                  {
+                    const std::int64_t j = origin[k] + i;
+                    if (j < lo[k] || j >= hi[k] || !share[j - base])
+                      continue;
+                    const double *block = &blocks[reverse[k] * n_c * n_c];
+                    const double *xj    = x + (j - base) * n_c;
+                    for (int a = 0; a < n_c; ++a)
+                      for (int b = 0; b < n_c; ++b)
+                        sum[b] += block[a * n_c + b] * xj[a];
+                  }
+              }
+            double *yi = y + (i - static_cast<std::int64_t>(first)) * n_c;
+            for (int a = 0; a < n_c; ++a)
+              yi[a] = sum[a];
+          }
+      }
+  }
+
+
+
+  namespace
+  {
+    /** Call `f.template operator()<n_c>()` for the runtime @p n. */
+    template <typename F>
+    void
+    with_block_size(const unsigned int n, const F &f)
+    {
+      switch (n)
+        {
+          case 1:
+            f(std::integral_constant<int, 1>());
+            break;
+          case 2:
+            f(std::integral_constant<int, 2>());
+            break;
+          case 3:
+            f(std::integral_constant<int, 3>());
+            break;
+          case 4:
+            f(std::integral_constant<int, 4>());
+            break;
+          default:
+            AssertThrow(false, ExcNotImplemented());
+        }
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  LatticeOperator<dim>::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                              const TrilinosWrappers::MPI::Vector &src) const
+  {
+    ghosted         = src;
+    const double *x = ghosted.trilinos_vector()[0];
+    double       *y = dst.trilinos_vector()[0];
+    with_block_size(n_components, [&](auto n_c) {
+      apply_stencil<decltype(n_c)::value, false>(x, y);
+    });
+    own_rows.vmult_add(dst, src);
+  }
+
+
+
+  template <int dim>
+  void
+  LatticeOperator<dim>::Tvmult(TrilinosWrappers::MPI::Vector       &dst,
+                               const TrilinosWrappers::MPI::Vector &src) const
+  {
+    ghosted         = src;
+    const double *x = ghosted.trilinos_vector()[0];
+    double       *y = dst.trilinos_vector()[0];
+    with_block_size(n_components, [&](auto n_c) {
+      apply_stencil<decltype(n_c)::value, true>(x, y);
+    });
+    own_rows.Tvmult_add(dst, src);
+  }
+
+
+
+  template <int dim>
+  std::size_t
+  LatticeOperator<dim>::memory_consumption() const
+  {
+    return shares.size() + blocks.size() * sizeof(double) +
+           own_rows.memory_consumption() + ghosted.memory_consumption() +
+           offsets.size() * sizeof(LatticeIndex);
+  }
+
+
+
+  template <int dim>
+  const IndexSet &
+  LatticeOperator<dim>::relevant_dofs() const
+  {
+    return relevant;
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  LatticeOperator<dim>::n_stored_rows() const
+  {
+    return Utilities::MPI::sum(n_own_rows, communicator);
+  }
+
+  template class LatticeOperator<2>;
+  template class LatticeOperator<3>;
+} // namespace ltn

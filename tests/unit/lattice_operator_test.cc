@@ -1,0 +1,159 @@
+// The matrix-free particle operators (LatticeOperator) against the assembled
+// matrices they replace: equal products M x and M^T x to round-off on random
+// vectors, for nonlocal diffusion and LPS in 2D and 3D, with cracks (an inner
+// one and one across the lattice) and a collar partly outside the body
+// (volume constraint) and partly inside (controls); on any number of ranks.
+
+#include <ltn/nonlocal/lattice_operator.h>
+#include <ltn/nonlocal/particle_diffusion.h>
+#include <ltn/nonlocal/particle_elasticity.h>
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace ltn;
+
+namespace
+{
+  /**
+   * The body (0,2)x(0,1)^(dim-1) and Omega_n = (0,1.25)x(0.25,0.75)^...:
+   * the collar at x < 0 lies outside the body, the rest inside it.
+   */
+  template <int dim>
+  Geometry<dim>
+  layout()
+  {
+    Geometry<dim> geometry;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        geometry.body.upper[d]            = (d == 0) ? 2 : 1;
+        geometry.nonlocal_region.lower[d] = (d == 0) ? 0 : 0.25;
+        geometry.nonlocal_region.upper[d] = (d == 0) ? 1.25 : 0.75;
+      }
+    geometry.overlap_width = 0.125;
+    return geometry;
+  }
+
+  TrilinosWrappers::MPI::Vector
+  random_vector(const DiscreteModel &model, std::mt19937 &random)
+  {
+    std::uniform_real_distribution<double> value(-1, 1);
+    TrilinosWrappers::MPI::Vector          x = model.new_vector();
+    for (const auto i : model.owned)
+      x(i) = value(random);
+    x.compress(VectorOperation::insert);
+    return x;
+  }
+
+  /**
+   * max |M x - M_mf x| / max |M x| and the same for the transposes, over
+   * random vectors.
+   */
+  double
+  product_difference(const DiscreteModel &assembled,
+                     const DiscreteModel &matrix_free)
+  {
+    REQUIRE(assembled.matrix_free == nullptr);
+    REQUIRE(matrix_free.matrix_free != nullptr);
+    std::mt19937 random(7);
+    double       worst = 0;
+    for (unsigned int trial = 0; trial < 3; ++trial)
+      {
+        const auto x = random_vector(assembled, random);
+        auto       y = assembled.new_vector(), z = assembled.new_vector();
+        for (const bool transpose : {false, true})
+          {
+            if (transpose)
+              {
+                assembled.Tvmult(y, x);
+                matrix_free.Tvmult(z, x);
+              }
+            else
+              {
+                assembled.vmult(y, x);
+                matrix_free.vmult(z, x);
+              }
+            const double scale = y.linfty_norm();
+            z -= y;
+            worst = std::max(worst, z.linfty_norm() / scale);
+          }
+      }
+    return worst;
+  }
+
+  template <int dim>
+  Crack<dim>
+  crack_at(const double x, const double half_width)
+  {
+    Crack<dim> crack;
+    for (unsigned int k = 0; k < dim; ++k)
+      {
+        crack.corners[k][0] = x;
+        for (unsigned int d = 1; d < dim; ++d)
+          crack.corners[k][d] = (k == d) ? 0.5 + half_width : 0.5 - half_width;
+      }
+    return crack;
+  }
+
+  template <int dim>
+  void
+  check_elasticity(const double h, const double m)
+  {
+    const Geometry<dim> geometry = layout<dim>();
+    // An inner crack and one across the whole lattice.
+    const std::vector<Crack<dim>> cracks = {crack_at<dim>(0.5 + h / 2, 0.1),
+                                            crack_at<dim>(1 - h / 2, 10)};
+    const Kernel                  influence("constant", 0.5, dim, m * h);
+    ParticleElasticity<dim>       assembled(
+      geometry, influence, h, 1.3, 0.7, cracks, MPI_COMM_WORLD);
+    ParticleElasticity<dim> matrix_free(
+      geometry, influence, h, 1.3, 0.7, cracks, MPI_COMM_WORLD);
+    const Functions::ConstantFunction<dim> load(1., dim);
+    assembled.assemble(load, load, false);
+    matrix_free.assemble(load, load, true);
+    const double difference =
+      product_difference(assembled.get_model(), matrix_free.get_model());
+    const auto &op = dynamic_cast<const LatticeOperator<dim> &>(
+      *matrix_free.get_model().matrix_free);
+    const auto n = matrix_free.get_lattice().n_particles();
+    INFO(dim << "D LPS, m = " << m << ": " << op.n_stored_rows() << " of " << n
+             << " rows stored, difference " << difference);
+    CHECK(difference < 1e-13);
+    // The shared stencil serves most particles, not all.
+    CHECK(op.n_stored_rows() > 0);
+    CHECK(op.n_stored_rows() < n);
+    auto rhs_difference = assembled.get_model().rhs;
+    rhs_difference -= matrix_free.get_model().rhs;
+    CHECK(rhs_difference.linfty_norm() == 0);
+  }
+
+  template <int dim>
+  void
+  check_diffusion(const double h, const double m)
+  {
+    const Geometry<dim>    geometry = layout<dim>();
+    const Kernel           kernel("constant", 0.5, dim, m * h);
+    ParticleDiffusion<dim> assembled(geometry, kernel, h, MPI_COMM_WORLD);
+    ParticleDiffusion<dim> matrix_free(geometry, kernel, h, MPI_COMM_WORLD);
+    const Functions::ConstantFunction<dim> data(1.);
+    assembled.assemble(data, data, false);
+    matrix_free.assemble(data, data, true);
+    const double difference =
+      product_difference(assembled.get_model(), matrix_free.get_model());
+    INFO(dim << "D diffusion, m = " << m << ": difference " << difference);
+    CHECK(difference < 1e-13);
+  }
+} // namespace
+
+
+
+TEST_CASE("matrix-free particle operators equal the assembled ones",
+          "[matrix-free][unit]")
+{
+  check_diffusion<2>(1. / 32, 3);
+  check_diffusion<3>(1. / 16, 2);
+  check_elasticity<2>(1. / 32, 2);
+  check_elasticity<2>(1. / 32, 3.5);
+  check_elasticity<3>(1. / 16, 2);
+}
