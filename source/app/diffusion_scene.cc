@@ -91,6 +91,14 @@ namespace ltn
     problem_data.parse_parameters(prm);
     discretization.parse_parameters(prm);
     coupling_parameters.parse_parameters(prm);
+    check_input(dim > 1 || !nonlocal_parameters.matrix_free,
+                "Nonlocal model/Operator",
+                "matrix-free",
+                "`assembled` in 1D (its nonlocal model is a finite element "
+                "weak form, not a particle lattice)");
+    coupling_parameters.check_operator(nonlocal_parameters.matrix_free,
+                                       geometry.has_local_model() &&
+                                         geometry.has_nonlocal_model());
     prm.enter_subsection("Output");
     output_directory = prm.get("Directory");
     write_vtu        = prm.get_bool("Write VTU");
@@ -229,8 +237,13 @@ namespace ltn
             if (nonlocal && cycle == 0)
               {
                 timer.enter_subsection("assemble nonlocal");
-                nonlocal->assemble(*data.nonlocal_rhs,
-                                   *data.volume_constraint_data);
+                if constexpr (dim == 1)
+                  nonlocal->assemble(*data.nonlocal_rhs,
+                                     *data.volume_constraint_data);
+                else
+                  nonlocal->assemble(*data.nonlocal_rhs,
+                                     *data.volume_constraint_data,
+                                     nonlocal_parameters.matrix_free);
                 timer.leave_subsection();
               }
             if (local)
@@ -265,6 +278,7 @@ namespace ltn
             record.n_nonlocal_dofs =
               nonlocal ? nonlocal->get_model().owned.size() : 0;
             record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
+            record.n_particles  = record.n_nonlocal_dofs;
             if (data.exact_solution)
               {
                 const ErrorNorms nonlocal_errors =

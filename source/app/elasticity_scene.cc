@@ -149,6 +149,9 @@ namespace ltn
     data.parse_parameters(prm);
     discretization.parse_parameters(prm);
     coupling_parameters.parse_parameters(prm);
+    coupling_parameters.check_operator(nonlocal_parameters.matrix_free,
+                                       geometry.has_local_model() &&
+                                         geometry.has_nonlocal_model());
     prm.enter_subsection("Output");
     output_directory = prm.get("Directory");
     write_vtu        = prm.get_bool("Write VTU");
@@ -313,7 +316,9 @@ namespace ltn
             if (nonlocal && cycle == 0)
               {
                 timer.enter_subsection("assemble nonlocal");
-                nonlocal->assemble(*f.body_force, *f.volume_constraint_data);
+                nonlocal->assemble(*f.body_force,
+                                   *f.volume_constraint_data,
+                                   nonlocal_parameters.matrix_free);
                 timer.leave_subsection();
               }
             if (local)
@@ -349,6 +354,8 @@ namespace ltn
             record.n_nonlocal_dofs =
               nonlocal ? nonlocal->get_model().owned.size() : 0;
             record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
+            record.n_particles =
+              nonlocal ? nonlocal->get_lattice().n_particles() : 0;
             const auto local_field =
               local ? local->get_model().ghosted(solution.fields[local_model]) :
                       TrilinosWrappers::MPI::Vector();

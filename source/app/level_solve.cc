@@ -30,16 +30,31 @@ namespace ltn
       }
     else
       {
-        // One model on the whole body: its own direct solve.
+        // One model on the whole body: its own solver.
         const unsigned int   k     = nonlocal ? nonlocal_model : local_model;
         const DiscreteModel &model = nonlocal ? *nonlocal : *local;
-        const ModelSolver    solver(model, false);
-        solution.fields[k]  = solver.forward(solver.new_control_vector(), true);
-        solution.iterations = 1;
-        record.solver_method = "direct";
+        const ModelSolver    solver(model, false, parameters.model_solvers);
+        solution.fields[k] = solver.forward(solver.new_control_vector(), true);
+        solution.model_solvers[k] = solver.statistics();
+        solution.iterations       = solution.model_solvers[k].iterations;
+        record.solver_method      = parameters.model_solvers.iterative ?
+                                      "preconditioned gmres" :
+                                      "direct";
       }
-    record.iterations = solution.iterations;
-    record.residual   = solution.residual;
+    record.iterations                                 = solution.iterations;
+    record.residual                                   = solution.residual;
+    const std::array<const DiscreteModel *, 2> models = {{nonlocal, local}};
+    for (const unsigned int k : {0u, 1u})
+      {
+        record.model_solves[k]     = solution.model_solvers[k].solves;
+        record.model_iterations[k] = solution.model_solvers[k].iterations;
+        if (models[k])
+          record.model_bytes[k] =
+            Utilities::MPI::sum(static_cast<double>(
+                                  models[k]->memory_consumption() +
+                                  solution.model_solvers[k].memory),
+                                models[k]->communicator);
+      }
 
     bool finite = true;
     for (const auto &field : solution.fields)

@@ -33,7 +33,24 @@ namespace ltn
       prm.declare_entry("Maximum iterations",
                         "1000",
                         Patterns::Integer(1),
-                        "Iteration limit of the reduced-space CG.");
+                        "Iteration limit of the reduced-space CG and of each "
+                        "model solve.");
+      prm.declare_entry("Model solvers",
+                        "direct",
+                        Patterns::Selection("direct|preconditioned gmres"),
+                        "How each model's equations are solved, inside the "
+                        "reduced-space CG or alone: `direct` (sparse LU of "
+                        "the assembled matrix) or `preconditioned gmres` "
+                        "(GMRES with algebraic multigrid on the finite "
+                        "element matrix, or on the nonlocal model's "
+                        "nearest-neighbour surrogate after eliminating the "
+                        "dilatation; works matrix-free).");
+      prm.declare_entry("Model solver tolerance",
+                        "1e-13",
+                        Patterns::Double(0),
+                        "Residual reduction, relative to the right-hand "
+                        "side, at which a model's GMRES stops. Keep it below "
+                        "the Relative tolerance of the outer CG.");
     }
     prm.leave_subsection();
   }
@@ -49,6 +66,16 @@ namespace ltn
       tikhonov_parameter = prm.get_double("Tikhonov parameter");
       relative_tolerance = prm.get_double("Relative tolerance");
       max_iterations     = prm.get_integer("Maximum iterations");
+      model_solvers.iterative =
+        prm.get("Model solvers") == "preconditioned gmres";
+      model_solvers.relative_tolerance =
+        prm.get_double("Model solver tolerance");
+      model_solvers.max_iterations = max_iterations;
+      check_input(model_solvers.relative_tolerance > 0 &&
+                    model_solvers.relative_tolerance < 1,
+                  "Coupling/Model solver tolerance",
+                  to_string(model_solvers.relative_tolerance),
+                  "a tolerance in (0, 1)");
       check_input(relative_tolerance > 0 && relative_tolerance < 1,
                   "Coupling/Relative tolerance",
                   to_string(relative_tolerance),
@@ -59,12 +86,36 @@ namespace ltn
 
 
 
+  void
+  CouplingParameters::check_operator(const bool matrix_free,
+                                     const bool coupled) const
+  {
+    if (!matrix_free)
+      return;
+    check_input(model_solvers.iterative,
+                "Coupling/Model solvers",
+                "direct",
+                "`preconditioned gmres` with Nonlocal model/Operator = "
+                "matrix-free (a direct solver needs the assembled matrix)");
+    check_input(!coupled || method != "full space direct",
+                "Coupling/Method",
+                method,
+                "`reduced space cg` with Nonlocal model/Operator = "
+                "matrix-free (the full-space direct solver needs the "
+                "assembled matrix)");
+  }
+
+
+
   template <int dim>
   CouplingSolution
   CouplingParameters::solve(const CouplingSystem<dim> &system) const
   {
     if (method == "reduced space cg")
-      return solve_reduced_space_cg(system, relative_tolerance, max_iterations);
+      return solve_reduced_space_cg(system,
+                                    relative_tolerance,
+                                    max_iterations,
+                                    model_solvers);
     return solve_full_space_direct(system);
   }
 

@@ -1,17 +1,63 @@
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
+#include <ltn/base/input_error.h>
 #include <ltn/base/partition.h>
 #include <ltn/coupling/model_solver.h>
 
 namespace ltn
 {
-  ModelSolver::ModelSolver(const DiscreteModel &model, const bool with_adjoint)
+  namespace
+  {
+    /** `M` or `M^T` of a model as an operator for deal.II's solvers. */
+    struct ModelOperator
+    {
+      const DiscreteModel &model;
+      const bool           transpose;
+
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        if (transpose)
+          model.Tvmult(dst, src);
+        else
+          model.vmult(dst, src);
+      }
+    };
+  } // namespace
+
+
+
+  ModelSolver::ModelSolver(const DiscreteModel       &model,
+                           const bool                 with_adjoint,
+                           const ModelSolverSettings &settings)
     : model(model)
+    , settings(settings)
     , control_dofs(model.controls.begin(), model.controls.end())
-    , direct(model.matrix, with_adjoint)
   {
     control_partition =
       contiguous_partition(control_dofs.size(), model.communicator);
     first_control =
       control_partition.is_empty() ? 0 : control_partition.nth_index_in_set(0);
+    if (settings.iterative)
+      {
+        forward_preconditioner =
+          std::make_unique<ModelPreconditioner>(model, false);
+        counts.memory = forward_preconditioner->memory_consumption();
+        if (with_adjoint)
+          {
+            adjoint_preconditioner =
+              std::make_unique<ModelPreconditioner>(model, true);
+            counts.memory += adjoint_preconditioner->memory_consumption();
+          }
+      }
+    else
+      {
+        AssertThrow(!model.matrix_free,
+                    ExcMessage("a direct solver needs the assembled matrix"));
+        direct = std::make_unique<DirectSolver>(model.matrix, with_adjoint);
+      }
   }
 
 
@@ -20,6 +66,66 @@ namespace ltn
   ModelSolver::new_control_vector() const
   {
     return TrilinosWrappers::MPI::Vector(control_partition, model.communicator);
+  }
+
+
+
+  void
+  ModelSolver::solve(const bool                           transpose,
+                     TrilinosWrappers::MPI::Vector       &x,
+                     const TrilinosWrappers::MPI::Vector &b,
+                     WarmStart                           *last) const
+  {
+    ++counts.solves;
+    if (direct)
+      {
+        if (transpose)
+          direct->solve_transposed(x, b);
+        else
+          direct->solve(x, b);
+        return;
+      }
+
+    const double b_norm = b.l2_norm();
+    x                   = 0.;
+    if (b_norm == 0)
+      return;
+    if (last && last->rhs.size() > 0)
+      {
+        const double last_norm = last->rhs.l2_norm();
+        if (last_norm > 0)
+          x.add((b * last->rhs) / (last_norm * last_norm), last->solution);
+      }
+    SolverControl control(settings.max_iterations,
+                          settings.relative_tolerance * b_norm);
+    // Right preconditioning: the tolerance is on the true residual.
+    SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+      control,
+      SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(50, true));
+    try
+      {
+        gmres.solve(ModelOperator{model, transpose},
+                    x,
+                    b,
+                    transpose ? *adjoint_preconditioner :
+                                *forward_preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        throw std::runtime_error(
+          "a model's GMRES did not reduce the residual by Coupling/Model "
+          "solver tolerance = " +
+          to_string(settings.relative_tolerance) +
+          " within Coupling/Maximum iterations = " +
+          std::to_string(settings.max_iterations) + " (relative residual " +
+          to_string(control.last_value() / b_norm) + ")");
+      }
+    counts.iterations += control.last_step();
+    if (last)
+      {
+        last->rhs      = b;
+        last->solution = x;
+      }
   }
 
 
@@ -36,7 +142,7 @@ namespace ltn
     rhs.compress(VectorOperation::insert);
 
     TrilinosWrappers::MPI::Vector field = model.new_vector();
-    direct.solve(field, rhs);
+    solve(false, field, rhs, with_data ? nullptr : &last_forward);
     return field;
   }
 
@@ -46,12 +152,20 @@ namespace ltn
   ModelSolver::adjoint(const TrilinosWrappers::MPI::Vector &z) const
   {
     TrilinosWrappers::MPI::Vector multiplier = model.new_vector();
-    direct.solve_transposed(multiplier, z);
+    solve(true, multiplier, z, &last_adjoint);
 
     TrilinosWrappers::MPI::Vector gradient = new_control_vector();
     for (std::size_t c = 0; c < control_dofs.size(); ++c)
       gradient(first_control + c) = multiplier(control_dofs[c]);
     gradient.compress(VectorOperation::insert);
     return gradient;
+  }
+
+
+
+  ModelSolverStatistics
+  ModelSolver::statistics() const
+  {
+    return counts;
   }
 } // namespace ltn

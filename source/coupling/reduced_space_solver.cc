@@ -77,10 +77,13 @@ namespace ltn
   CouplingSolution
   solve_reduced_space_cg(const CouplingSystem<dim> &system,
                          const double               relative_tolerance,
-                         const unsigned int         max_iterations)
+                         const unsigned int         max_iterations,
+                         const ModelSolverSettings &model_solvers)
   {
-    ModelSolver nonlocal_solver(*system.models[nonlocal_model], true);
-    ModelSolver local_solver(*system.models[local_model], true);
+    ModelSolver nonlocal_solver(*system.models[nonlocal_model],
+                                true,
+                                model_solvers);
+    ModelSolver local_solver(*system.models[local_model], true, model_solvers);
     const ReducedHessian<dim> hessian(system,
                                       {{&nonlocal_solver, &local_solver}});
 
@@ -115,13 +118,24 @@ namespace ltn
     solution.fields[nonlocal_model] =
       nonlocal_solver.forward(theta.block(0), true);
     solution.fields[local_model] = local_solver.forward(theta.block(1), true);
+    solution.model_solvers       = {
+      {nonlocal_solver.statistics(), local_solver.statistics()}};
     return solution;
   }
 
   template CouplingSolution
-  solve_reduced_space_cg(const CouplingSystem<1> &, double, unsigned int);
+  solve_reduced_space_cg(const CouplingSystem<1> &,
+                         double,
+                         unsigned int,
+                         const ModelSolverSettings &);
   template CouplingSolution
-  solve_reduced_space_cg(const CouplingSystem<2> &, double, unsigned int);
+  solve_reduced_space_cg(const CouplingSystem<2> &,
+                         double,
+                         unsigned int,
+                         const ModelSolverSettings &);
   template CouplingSolution
-  solve_reduced_space_cg(const CouplingSystem<3> &, double, unsigned int);
+  solve_reduced_space_cg(const CouplingSystem<3> &,
+                         double,
+                         unsigned int,
+                         const ModelSolverSettings &);
 } // namespace ltn

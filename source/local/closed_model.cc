@@ -25,6 +25,10 @@ namespace ltn
     hanging_nodes.reinit(model.relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, hanging_nodes);
     hanging_nodes.close();
+    // One translation per component: the near null space AMG needs.
+    DoFTools::extract_constant_modes(dof_handler,
+                                     ComponentMask(fe.n_components(), true),
+                                     model.constant_modes);
   }
 
 

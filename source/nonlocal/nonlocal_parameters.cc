@@ -45,6 +45,15 @@ namespace ltn
                         "lattice fills the nonlocal region, so the spacing "
                         "must divide its extents; it need not line up with "
                         "the finite element mesh.");
+      prm.declare_entry("Operator",
+                        "assembled",
+                        Patterns::Selection("assembled|matrix-free"),
+                        "How the particle operator (2D, 3D) is stored: "
+                        "`assembled` (a sparse matrix; needed by the direct "
+                        "solvers) or `matrix-free` (one stencil shared by the "
+                        "particles away from collar and cracks, rows stored "
+                        "only for the others; needs Coupling/Model solvers = "
+                        "preconditioned gmres).");
       prm.declare_entry("Finite element degree",
                         "1",
                         Patterns::Integer(1, 2),
@@ -67,6 +76,7 @@ namespace ltn
       horizon_ratio    = prm.get_double("Horizon to mesh size ratio");
       degree           = prm.get_integer("Finite element degree");
       spacing_ratio    = prm.get_double("Particle spacing to mesh size ratio");
+      matrix_free      = prm.get("Operator") == "matrix-free";
       check_input(spacing_ratio > 0,
                   "Nonlocal model/Particle spacing to mesh size ratio",
                   to_string(spacing_ratio),

@@ -52,8 +52,27 @@ namespace ltn
       j["solver"]["method"]     = level.solver_method;
       j["solver"]["iterations"] = level.iterations;
       j["solver"]["residual"]   = level.residual;
-      j["mismatch_J"]           = level.mismatch_J;
-      j["errors"]               = errors_to_json(level);
+      const char *names[2]      = {"nonlocal", "local"};
+      for (const unsigned int k : {0u, 1u})
+        if (level.model_solves[k] > 0)
+          {
+            JsonValue &model    = j["solver"]["model solvers"][names[k]];
+            model["solves"]     = level.model_solves[k];
+            model["iterations"] = level.model_iterations[k];
+            model["iterations per solve"] =
+              static_cast<double>(level.model_iterations[k]) /
+              level.model_solves[k];
+          }
+      JsonValue &memory              = j["memory"];
+      memory["nonlocal model bytes"] = level.model_bytes[0];
+      memory["local model bytes"]    = level.model_bytes[1];
+      if (level.n_particles > 0)
+        memory["bytes per particle"] = level.model_bytes[0] / level.n_particles;
+      if (level.n_local_dofs > 0)
+        memory["bytes per local dof"] =
+          level.model_bytes[1] / level.n_local_dofs;
+      j["mismatch_J"] = level.mismatch_J;
+      j["errors"]     = errors_to_json(level);
       if (!level.extras.is_null())
         j["mechanics"] = level.extras;
     }

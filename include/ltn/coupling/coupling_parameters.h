@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ltn/coupling/coupling_system.h>
+#include <ltn/coupling/model_solver.h>
 
 #include <string>
 
@@ -27,9 +28,18 @@ namespace ltn
     CouplingSolution
     solve(const CouplingSystem<dim> &system) const;
 
-    std::string  method             = "full space direct";
-    double       tikhonov_parameter = 0;
-    double       relative_tolerance = 1e-12;
-    unsigned int max_iterations     = 1000;
+    /**
+     * Check that the selected solvers can work with a nonlocal model stored
+     * matrix-free (@p matrix_free), coupled to a local one or alone
+     * (@p coupled); an InputError names the parameter.
+     */
+    void
+    check_operator(const bool matrix_free, const bool coupled) const;
+
+    std::string         method = "full space direct";
+    ModelSolverSettings model_solvers;
+    double              tikhonov_parameter = 0;
+    double              relative_tolerance = 1e-12;
+    unsigned int        max_iterations     = 1000;
   };
 } // namespace ltn

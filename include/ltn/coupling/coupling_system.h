@@ -5,6 +5,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
+#include <ltn/coupling/model_solver.h>
 #include <ltn/coupling/overlap_quadrature.h>
 
 #include <array>
@@ -86,5 +87,7 @@ namespace ltn
     unsigned int                                 iterations = 0;
     /** The relative residual the solver reached. */
     double residual = 0;
+    /** Per model: its own solver's solves, iterations and memory. */
+    std::array<ModelSolverStatistics, 2> model_solvers;
   };
 } // namespace ltn

@@ -6,19 +6,46 @@
 
 #include <ltn/base/discrete_model.h>
 #include <ltn/coupling/direct_solver.h>
+#include <ltn/coupling/model_preconditioner.h>
 
+#include <memory>
 #include <vector>
 
 namespace ltn
 {
   using namespace dealii;
 
+  /** How a model's equations are solved (subsection `Coupling`). */
+  struct ModelSolverSettings
+  {
+    /**
+     * GMRES preconditioned by ModelPreconditioner, instead of a sparse
+     * direct solver (which needs the assembled matrix).
+     */
+    bool iterative = false;
+    /** The residual reduction relative to the right-hand side. */
+    double       relative_tolerance = 1e-12;
+    unsigned int max_iterations     = 1000;
+  };
+
+  /** How often a model's solver ran and how many iterations it took. */
+  struct ModelSolverStatistics
+  {
+    unsigned int solves     = 0;
+    unsigned int iterations = 0;
+    /** Bytes of this rank's factorization or preconditioners (estimated). */
+    std::size_t memory = 0;
+  };
+
   /**
    * One model's own solver, as the reduced-space method sees it: a black box
    * that solves the model's equations for given controls (forward) and the
    * transposed equations (adjoint). The model's field for controls `theta`
-   * solves `M x = r + S theta` (see DiscreteModel); `M` and `M^T` are
-   * factorized once.
+   * solves `M x = r + S theta` (see DiscreteModel). The direct solver
+   * factorizes `M` and `M^T` once. The iterative one builds their
+   * preconditioners once and starts each solve from the multiple of the
+   * previous solution that best fits the new right-hand side: consecutive
+   * solves of an outer Krylov method have correlated right-hand sides.
    *
    * Controls are numbered `0 .. n_controls - 1` over all ranks, each rank
    * owning a contiguous range: those of its own control degrees of freedom,
@@ -27,8 +54,13 @@ namespace ltn
   class ModelSolver
   {
   public:
-    /** Factorize the model's matrix, and @p with_adjoint its transpose. */
-    ModelSolver(const DiscreteModel &model, const bool with_adjoint);
+    /**
+     * Prepare to solve with the model's matrix, and @p with_adjoint with its
+     * transpose, as @p settings say.
+     */
+    ModelSolver(const DiscreteModel       &model,
+                const bool                 with_adjoint,
+                const ModelSolverSettings &settings = ModelSolverSettings());
 
     /** A zero vector of controls. */
     TrilinosWrappers::MPI::Vector
@@ -51,12 +83,38 @@ namespace ltn
     TrilinosWrappers::MPI::Vector
     adjoint(const TrilinosWrappers::MPI::Vector &z) const;
 
+    /** The solves so far and their iterations, summed over both kinds. */
+    ModelSolverStatistics
+    statistics() const;
+
   private:
+    /** The last right-hand side and solution of one kind of solve. */
+    struct WarmStart
+    {
+      TrilinosWrappers::MPI::Vector rhs, solution;
+    };
+
+    /**
+     * Solve `M x = b` (@p transpose: `M^T x = b`); the iterative solver
+     * starts from the best multiple of @p last's solution, if given, and
+     * replaces it with this solve's.
+     */
+    void
+    solve(const bool                           transpose,
+          TrilinosWrappers::MPI::Vector       &x,
+          const TrilinosWrappers::MPI::Vector &b,
+          WarmStart                           *last) const;
+
     const DiscreteModel                 &model;
+    const ModelSolverSettings            settings;
     std::vector<types::global_dof_index> control_dofs;
     /** The number of this rank's first control. */
-    types::global_dof_index first_control;
-    IndexSet                control_partition;
-    DirectSolver            direct;
+    types::global_dof_index              first_control;
+    IndexSet                             control_partition;
+    std::unique_ptr<DirectSolver>        direct;
+    std::unique_ptr<ModelPreconditioner> forward_preconditioner;
+    std::unique_ptr<ModelPreconditioner> adjoint_preconditioner;
+    mutable WarmStart                    last_forward, last_adjoint;
+    mutable ModelSolverStatistics        counts;
   };
 } // namespace ltn

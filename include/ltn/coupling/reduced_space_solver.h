@@ -14,11 +14,13 @@ namespace ltn
    * are solved by conjugate gradients; `V` is the control-to-state map and
    * `d_0` the mismatch of the states with zero controls. Each CG iteration
    * costs one forward and one adjoint solve per model. The iteration stops
-   * when the residual has dropped by @p relative_tolerance.
+   * when the residual has dropped by @p relative_tolerance. The models'
+   * solvers are as @p model_solvers say.
    */
   template <int dim>
   CouplingSolution
   solve_reduced_space_cg(const CouplingSystem<dim> &system,
                          const double               relative_tolerance,
-                         const unsigned int         max_iterations);
+                         const unsigned int         max_iterations,
+                         const ModelSolverSettings &model_solvers);
 } // namespace ltn

@@ -55,5 +55,7 @@ namespace ltn
     double       horizon_ratio    = 0;
     unsigned int degree           = 1;
     double       spacing_ratio    = 1;
+    /** Apply the particle operator without assembling it. */
+    bool matrix_free = false;
   };
 } // namespace ltn

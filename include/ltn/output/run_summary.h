@@ -5,6 +5,7 @@
 #include <ltn/base/field_errors.h>
 #include <ltn/base/json.h>
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,7 +27,16 @@ namespace ltn
     std::string             solver_method;
     unsigned int            iterations = 0;
     double                  residual   = 0;
-    double                  mismatch_J = 0;
+    /** Per model (nonlocal, local): its own solver's solves, iterations. */
+    std::array<unsigned int, 2> model_solves     = {{0, 0}};
+    std::array<unsigned int, 2> model_iterations = {{0, 0}};
+    /**
+     * Per model, bytes over all ranks for its operator, right-hand side and
+     * solver (preconditioners; direct factorizations are not counted).
+     */
+    std::array<double, 2>   model_bytes = {{0, 0}};
+    types::global_dof_index n_particles = 0;
+    double                  mismatch_J  = 0;
     /** False when the scene has no exact solution. */
     bool       has_errors = false;
     ErrorNorms nonlocal_errors, local_errors, coupled_errors;
