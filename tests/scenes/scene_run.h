@@ -7,6 +7,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ltn/app/diffusion_scene.h>
+#include <ltn/app/elasticity_scene.h>
 #include <ltn/app/parameter_reading.h>
 
 #include <catch2/catch.hpp>
@@ -36,6 +37,14 @@ run_scene(const std::string &scene, const std::vector<std::string> &sets = {})
     run.summary   = runner.run("", quiet);
     run.solutions = runner.get_solutions();
   };
+  if (prm.get("Model") == "elasticity")
+    {
+      if (prm.get_integer("Dimension") == 2)
+        solve(ltn::ElasticityScene<2>(prm, scene));
+      else
+        solve(ltn::ElasticityScene<3>(prm, scene));
+      return run;
+    }
   switch (prm.get_integer("Dimension"))
     {
       case 1:
