@@ -1,7 +1,5 @@
 #include <deal.II/base/mpi.h>
 
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-
 #include <ltn/nonlocal/lattice_operator.h>
 
 #include <algorithm>
@@ -117,45 +115,15 @@ namespace ltn
     owned_dofs.add_range(n_components * first, n_components * end);
     relevant = IndexSet(n_dofs);
     relevant.add_range(n_components * reach_first, n_components * reach_end);
-    DynamicSparsityPattern               dsp(n_dofs, n_dofs, owned_dofs);
-    std::vector<types::global_dof_index> columns;
-    std::vector<double>                  values;
+    IndexSet stored(lattice.n_particles());
     for (auto p = first; p < end; ++p)
       if (!shares[p - reach_first])
-        {
-          rows_of(p, rows);
-          for (unsigned int c = 0; c < n_components; ++c)
-            {
-              columns.clear();
-              for (const auto &entry : rows[c])
-                columns.push_back(entry.first);
-              dsp.add_entries(n_components * p + c,
-                              columns.begin(),
-                              columns.end());
-            }
-          ++n_own_rows;
-        }
-    own_rows.reinit(owned_dofs, owned_dofs, dsp, communicator);
-    for (auto p = first; p < end; ++p)
-      if (!shares[p - reach_first])
-        {
-          rows_of(p, rows);
-          for (unsigned int c = 0; c < n_components; ++c)
-            {
-              columns.clear();
-              values.clear();
-              for (const auto &[column, value] : rows[c])
-                {
-                  columns.push_back(column);
-                  values.push_back(value);
-                }
-              own_rows.add(n_components * p + c,
-                           columns.size(),
-                           columns.data(),
-                           values.data());
-            }
-        }
-    own_rows.compress(VectorOperation::add);
+        stored.add_index(p);
+    stored.compress();
+    n_own_rows = stored.n_elements();
+    IndexSet read;
+    assemble_rows(
+      stored, n_components, rows_of, owned_dofs, communicator, own_rows, read);
 
     ghosted.reinit(owned_dofs, relevant, communicator);
     // The products index the imported values by `number - reach_first`.
@@ -335,6 +303,59 @@ namespace ltn
     return Utilities::MPI::sum(n_own_rows, communicator);
   }
 
-  template class LatticeOperator<2>;
-  template class LatticeOperator<3>;
+  template <int dim>
+  void
+  store_particle_operator(
+    const ParticleLattice<dim>                                     &lattice,
+    const std::vector<typename ParticleLattice<dim>::LatticeIndex> &offsets,
+    const unsigned int                                       n_components,
+    const IndexSet                                          &owned_particles,
+    const std::function<bool(
+      const typename ParticleLattice<dim>::LatticeIndex &)> &shares_stencil,
+    const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
+    const bool     matrix_free,
+    DiscreteModel &model)
+  {
+    if (matrix_free)
+      {
+        const auto op =
+          std::make_shared<LatticeOperator<dim>>(lattice,
+                                                 offsets,
+                                                 n_components,
+                                                 owned_particles,
+                                                 shares_stencil,
+                                                 rows_of,
+                                                 model.communicator);
+        model.relevant    = op->relevant_dofs();
+        model.matrix_free = op;
+        model.matrix.clear();
+      }
+    else
+      {
+        model.matrix_free.reset();
+        assemble_rows(owned_particles,
+                      n_components,
+                      rows_of,
+                      model.owned,
+                      model.communicator,
+                      model.matrix,
+                      model.relevant);
+      }
+  }
+
+#define LTN_INSTANTIATE(dim)                                              \
+  template class LatticeOperator<dim>;                                    \
+  template void store_particle_operator<dim>(                             \
+    const ParticleLattice<dim> &,                                         \
+    const std::vector<typename ParticleLattice<dim>::LatticeIndex> &,     \
+    const unsigned int,                                                   \
+    const IndexSet &,                                                     \
+    const std::function<bool(                                             \
+      const typename ParticleLattice<dim>::LatticeIndex &)> &,            \
+    const std::function<void(types::global_dof_index, ParticleRows &)> &, \
+    const bool,                                                           \
+    DiscreteModel &);
+  LTN_INSTANTIATE(2)
+  LTN_INSTANTIATE(3)
+#undef LTN_INSTANTIATE
 } // namespace ltn

@@ -6,20 +6,23 @@ namespace ltn
 {
   void
   assemble_rows(
-    const IndexSet    &owned_particles,
+    const IndexSet    &particles,
     const unsigned int n_components,
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
-    DiscreteModel                                                      &model)
+    const IndexSet                 &owned_dofs,
+    const MPI_Comm                  communicator,
+    TrilinosWrappers::SparseMatrix &matrix,
+    IndexSet                       &relevant)
   {
-    const auto n_dofs = model.owned.size();
+    const auto n_dofs = owned_dofs.size();
     // One pass for the pattern of the owned rows and the ghosts they reach,
     // one for the values: the rows are cheaper to rebuild than to keep.
-    DynamicSparsityPattern               dsp(n_dofs, n_dofs, model.owned);
+    DynamicSparsityPattern               dsp(n_dofs, n_dofs, owned_dofs);
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
     ParticleRows                         rows(n_components);
-    model.relevant = model.owned;
-    for (const auto p : owned_particles)
+    relevant = owned_dofs;
+    for (const auto p : particles)
       {
         rows_of(p, rows);
         for (unsigned int c = 0; c < n_components; ++c)
@@ -32,12 +35,12 @@ namespace ltn
                             columns.begin(),
                             columns.end(),
                             true);
-            model.relevant.add_indices(columns.begin(), columns.end());
+            relevant.add_indices(columns.begin(), columns.end());
           }
       }
-    model.relevant.compress();
-    model.matrix.reinit(model.owned, model.owned, dsp, model.communicator);
-    for (const auto p : owned_particles)
+    relevant.compress();
+    matrix.reinit(owned_dofs, owned_dofs, dsp, communicator);
+    for (const auto p : particles)
       {
         rows_of(p, rows);
         for (unsigned int c = 0; c < n_components; ++c)
@@ -49,12 +52,12 @@ namespace ltn
                 columns.push_back(column);
                 values.push_back(value);
               }
-            model.matrix.set(n_components * p + c,
-                             columns.size(),
-                             columns.data(),
-                             values.data());
+            matrix.set(n_components * p + c,
+                       columns.size(),
+                       columns.data(),
+                       values.data());
           }
       }
-    model.matrix.compress(VectorOperation::insert);
+    matrix.compress(VectorOperation::insert);
   }
 } // namespace ltn

@@ -70,28 +70,18 @@ namespace ltn
                                    const Function<dim> &volume_data,
                                    const bool           matrix_free)
   {
-    const auto rows_of = [this](const types::global_dof_index i,
-                                ParticleRows &rows) { particle_rows(i, rows); };
-    if (matrix_free)
-      {
-        // Every particle of Omega_n has the stencil's row.
-        const auto op = std::make_shared<LatticeOperator<dim>>(
-          lattice,
-          stencil.offsets(),
-          1,
-          model.owned,
-          [this](const LatticeIndex &index) { return lattice.inside(index); },
-          rows_of,
-          model.communicator);
-        model.relevant    = op->relevant_dofs();
-        model.matrix_free = op;
-        model.matrix.clear();
-      }
-    else
-      {
-        model.matrix_free.reset();
-        assemble_rows(model.owned, 1, rows_of, model);
-      }
+    // Every particle of Omega_n has the stencil's row.
+    store_particle_operator<dim>(
+      lattice,
+      stencil.offsets(),
+      1,
+      model.owned,
+      [this](const LatticeIndex &index) { return lattice.inside(index); },
+      [this](const types::global_dof_index i, ParticleRows &rows) {
+        particle_rows(i, rows);
+      },
+      matrix_free,
+      model);
 
     double diagonal = 0;
     for (const double a : stencil.coefficients())

@@ -1,6 +1,5 @@
 #include <ltn/base/partition.h>
 #include <ltn/nonlocal/lattice_operator.h>
-#include <ltn/nonlocal/lattice_rows.h>
 #include <ltn/nonlocal/lattice_surrogate.h>
 #include <ltn/nonlocal/particle_elasticity.h>
 
@@ -267,28 +266,17 @@ namespace ltn
                                     const Function<dim> &volume_data,
                                     const bool           matrix_free)
   {
-    const auto rows_of = [this](const types::global_dof_index n, Rows &rows) {
-      particle_rows(n, rows);
-    };
-    if (matrix_free)
-      {
-        const auto op = std::make_shared<LatticeOperator<dim>>(
-          lattice,
-          stencil.offsets(),
-          n_components,
-          owned_particles,
-          [this](const LatticeIndex &index) { return shares_stencil(index); },
-          rows_of,
-          model.communicator);
-        model.relevant    = op->relevant_dofs();
-        model.matrix_free = op;
-        model.matrix.clear();
-      }
-    else
-      {
-        model.matrix_free.reset();
-        assemble_rows(owned_particles, n_components, rows_of, model);
-      }
+    store_particle_operator<dim>(
+      lattice,
+      stencil.offsets(),
+      n_components,
+      owned_particles,
+      [this](const LatticeIndex &index) { return shares_stencil(index); },
+      [this](const types::global_dof_index n, Rows &rows) {
+        particle_rows(n, rows);
+      },
+      matrix_free,
+      model);
 
     // The surrogate for AMG: the vector Laplacian on the lattice, scaled to
     // the diagonal of the displacement rows, without the bonds cracks cut.

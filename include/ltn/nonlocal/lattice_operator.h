@@ -108,4 +108,23 @@ namespace ltn
     MPI_Comm                              communicator;
     mutable TrilinosWrappers::MPI::Vector ghosted;
   };
+
+  /**
+   * Store a particle model's operator in @p model: with @p matrix_free a
+   * LatticeOperator (the other arguments as its constructor's), otherwise
+   * the assembled rows of all @p owned_particles; and the degrees of
+   * freedom its rows read in `model.relevant`.
+   */
+  template <int dim>
+  void
+  store_particle_operator(
+    const ParticleLattice<dim>                                     &lattice,
+    const std::vector<typename ParticleLattice<dim>::LatticeIndex> &offsets,
+    const unsigned int                                       n_components,
+    const IndexSet                                          &owned_particles,
+    const std::function<bool(
+      const typename ParticleLattice<dim>::LatticeIndex &)> &shares_stencil,
+    const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
+    const bool     matrix_free,
+    DiscreteModel &model);
 } // namespace ltn

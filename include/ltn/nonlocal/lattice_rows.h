@@ -1,9 +1,10 @@
 #pragma once
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/types.h>
 
-#include <ltn/base/discrete_model.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 
 #include <functional>
 #include <utility>
@@ -18,16 +19,19 @@ namespace ltn
     std::vector<std::vector<std::pair<types::global_dof_index, double>>>;
 
   /**
-   * Assemble @p model's matrix from the rows of its particles: this rank's
-   * @p owned_particles, @p n_components degrees of freedom each (numbered
-   * `n_components p + c`), each row given by @p rows_of. Sets
-   * `model.relevant` to the owned degrees of freedom and those the rows
-   * read.
+   * Assemble into @p matrix (rows and columns over @p owned_dofs) the rows
+   * of @p particles, this rank's, @p n_components degrees of freedom each
+   * (numbered `n_components p + c`), each row given by @p rows_of; the rows
+   * of other owned particles stay empty. @p relevant becomes @p owned_dofs
+   * and the columns the rows read.
    */
   void
   assemble_rows(
-    const IndexSet    &owned_particles,
+    const IndexSet    &particles,
     const unsigned int n_components,
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
-    DiscreteModel                                                      &model);
+    const IndexSet                 &owned_dofs,
+    const MPI_Comm                  communicator,
+    TrilinosWrappers::SparseMatrix &matrix,
+    IndexSet                       &relevant);
 } // namespace ltn
