@@ -41,8 +41,10 @@ namespace ltn
                                       "preconditioned gmres" :
                                       "direct";
       }
-    record.iterations                                 = solution.iterations;
-    record.residual                                   = solution.residual;
+    record.iterations                   = solution.iterations;
+    record.residual                     = solution.residual;
+    record.explicit_controls            = solution.explicit_controls;
+    record.preconditioner_setup_seconds = solution.preconditioner_setup_seconds;
     const std::array<const DiscreteModel *, 2> models = {{nonlocal, local}};
     for (const unsigned int k : {0u, 1u})
       {

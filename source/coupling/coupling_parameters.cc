@@ -35,6 +35,15 @@ namespace ltn
                         Patterns::Integer(1),
                         "Iteration limit of the reduced-space CG and of each "
                         "model solve.");
+      prm.declare_entry("Control preconditioner",
+                        "block diagonal",
+                        Patterns::Selection("block diagonal|none"),
+                        "Preconditioner of the reduced-space CG: `block "
+                        "diagonal` (the exact Hessian block of the local "
+                        "controls, built with one forward and one adjoint "
+                        "local solve per local control, and the observation "
+                        "weights of the nonlocal controls; keeps the "
+                        "iterations nearly independent of h) or `none`.");
       prm.declare_entry("Model solvers",
                         "direct",
                         Patterns::Selection("direct|preconditioned gmres"),
@@ -66,6 +75,8 @@ namespace ltn
       tikhonov_parameter = prm.get_double("Tikhonov parameter");
       relative_tolerance = prm.get_double("Relative tolerance");
       max_iterations     = prm.get_integer("Maximum iterations");
+      precondition_controls =
+        prm.get("Control preconditioner") == "block diagonal";
       model_solvers.iterative =
         prm.get("Model solvers") == "preconditioned gmres";
       model_solvers.relative_tolerance =
@@ -115,7 +126,8 @@ namespace ltn
       return solve_reduced_space_cg(system,
                                     relative_tolerance,
                                     max_iterations,
-                                    model_solvers);
+                                    model_solvers,
+                                    precondition_controls);
     return solve_full_space_direct(system);
   }
 

@@ -102,6 +102,28 @@ namespace ltn
 
 
   template <int dim>
+  typename CouplingSystem<dim>::VectorType
+  CouplingSystem<dim>::observation_diagonal(const unsigned int k) const
+  {
+    VectorType diagonal;
+    diagonal.reinit(models[k]->owned,
+                    overlap_columns[k],
+                    models[k]->communicator,
+                    true);
+    const auto &rows =
+      (k == nonlocal_model) ? overlap.nonlocal_rows : overlap.local_rows;
+    for (std::size_t q = 0; q < rows.size(); ++q)
+      for (const auto &[i, b] : rows[q])
+        diagonal(i) += overlap.weights[q] * b * b;
+    diagonal.compress(VectorOperation::add);
+    VectorType owned = models[k]->new_vector();
+    owned            = diagonal;
+    return owned;
+  }
+
+
+
+  template <int dim>
   types::global_dof_index
   CouplingSystem<dim>::n_controls() const
   {

@@ -153,12 +153,20 @@ namespace ltn
   {
     TrilinosWrappers::MPI::Vector multiplier = model.new_vector();
     solve(true, multiplier, z, &last_adjoint);
+    return restrict_to_controls(multiplier);
+  }
 
-    TrilinosWrappers::MPI::Vector gradient = new_control_vector();
+
+
+  TrilinosWrappers::MPI::Vector
+  ModelSolver::restrict_to_controls(
+    const TrilinosWrappers::MPI::Vector &x) const
+  {
+    TrilinosWrappers::MPI::Vector restricted = new_control_vector();
     for (std::size_t c = 0; c < control_dofs.size(); ++c)
-      gradient(first_control + c) = multiplier(control_dofs[c]);
-    gradient.compress(VectorOperation::insert);
-    return gradient;
+      restricted(first_control + c) = x(control_dofs[c]);
+    restricted.compress(VectorOperation::insert);
+    return restricted;
   }
 
 

@@ -1,10 +1,14 @@
+#include <deal.II/base/timer.h>
+
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <ltn/base/input_error.h>
+#include <ltn/coupling/control_preconditioner.h>
 #include <ltn/coupling/model_solver.h>
+#include <ltn/coupling/reduced_hessian.h>
 #include <ltn/coupling/reduced_space_solver.h>
 
 namespace ltn
@@ -12,63 +16,6 @@ namespace ltn
   namespace
   {
     using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
-
-    /**
-     * The reduced Hessian `V^T B^T W B V + alpha I` as an operator on the
-     * controls `[theta_n; theta_l]`, one block per model.
-     */
-    template <int dim>
-    class ReducedHessian
-    {
-    public:
-      ReducedHessian(const CouplingSystem<dim>          &system,
-                     const std::array<ModelSolver *, 2> &solvers)
-        : system(system)
-        , solvers(solvers)
-      {}
-
-      BlockVectorType
-      new_control_vector() const
-      {
-        BlockVectorType theta(2);
-        for (const unsigned int k : {0u, 1u})
-          theta.block(k) = solvers[k]->new_control_vector();
-        theta.collect_sizes();
-        return theta;
-      }
-
-      /** `V^T B^T W d` for a mismatch @p d at this rank's points. */
-      BlockVectorType
-      reduced_gradient(const std::vector<double> &d) const
-      {
-        std::array<TrilinosWrappers::MPI::Vector, 2> z;
-        system.mismatch_gradient(d, z[0], z[1]);
-        BlockVectorType g(2);
-        for (const unsigned int k : {0u, 1u})
-          g.block(k) = solvers[k]->adjoint(z[k]);
-        g.collect_sizes();
-        return g;
-      }
-
-      /** The mismatch of the fields for controls @p theta. */
-      std::vector<double>
-      mismatch(const BlockVectorType &theta, const bool with_data) const
-      {
-        return system.mismatch(solvers[0]->forward(theta.block(0), with_data),
-                               solvers[1]->forward(theta.block(1), with_data));
-      }
-
-      void
-      vmult(BlockVectorType &dst, const BlockVectorType &theta) const
-      {
-        dst = reduced_gradient(mismatch(theta, false));
-        dst.add(system.alpha, theta);
-      }
-
-    private:
-      const CouplingSystem<dim>         &system;
-      const std::array<ModelSolver *, 2> solvers;
-    };
   } // namespace
 
 
@@ -78,7 +25,8 @@ namespace ltn
   solve_reduced_space_cg(const CouplingSystem<dim> &system,
                          const double               relative_tolerance,
                          const unsigned int         max_iterations,
-                         const ModelSolverSettings &model_solvers)
+                         const ModelSolverSettings &model_solvers,
+                         const bool                 precondition)
   {
     ModelSolver nonlocal_solver(*system.models[nonlocal_model],
                                 true,
@@ -100,7 +48,17 @@ namespace ltn
         SolverCG<BlockVectorType> cg(control);
         try
           {
-            cg.solve(hessian, theta, rhs, PreconditionIdentity());
+            if (precondition)
+              {
+                Timer                            setup_timer;
+                const ControlPreconditioner<dim> preconditioner(hessian);
+                solution.preconditioner_setup_seconds = setup_timer.wall_time();
+                solution.explicit_controls =
+                  preconditioner.n_explicit_controls();
+                cg.solve(hessian, theta, rhs, preconditioner);
+              }
+            else
+              cg.solve(hessian, theta, rhs, PreconditionIdentity());
           }
         catch (const SolverControl::NoConvergence &)
           {
@@ -127,15 +85,18 @@ namespace ltn
   solve_reduced_space_cg(const CouplingSystem<1> &,
                          double,
                          unsigned int,
-                         const ModelSolverSettings &);
+                         const ModelSolverSettings &,
+                         bool);
   template CouplingSolution
   solve_reduced_space_cg(const CouplingSystem<2> &,
                          double,
                          unsigned int,
-                         const ModelSolverSettings &);
+                         const ModelSolverSettings &,
+                         bool);
   template CouplingSolution
   solve_reduced_space_cg(const CouplingSystem<3> &,
                          double,
                          unsigned int,
-                         const ModelSolverSettings &);
+                         const ModelSolverSettings &,
+                         bool);
 } // namespace ltn

@@ -155,6 +155,13 @@ namespace ltn
                                        {},
                                        ghosted_solution,
                                        indicators);
+    // Spend the fraction on the cells that may be refined: where the largest
+    // indicators lie in cells that may not (the overlap's), flagging first
+    // and clearing after would refine nothing.
+    for (const auto &cell : triangulation->active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          !may_refine(cell->center(), cell->extent_in_direction(0)))
+        indicators(cell->active_cell_index()) = 0;
     if constexpr (dim == 1)
       GridRefinement::refine_and_coarsen_fixed_number(*triangulation,
                                                       indicators,

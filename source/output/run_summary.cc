@@ -52,7 +52,13 @@ namespace ltn
       j["solver"]["method"]     = level.solver_method;
       j["solver"]["iterations"] = level.iterations;
       j["solver"]["residual"]   = level.residual;
-      const char *names[2]      = {"nonlocal", "local"};
+      if (level.explicit_controls > 0)
+        {
+          JsonValue &preconditioner = j["solver"]["control preconditioner"];
+          preconditioner["explicit controls"] = level.explicit_controls;
+          preconditioner["setup seconds"] = level.preconditioner_setup_seconds;
+        }
+      const char *names[2] = {"nonlocal", "local"};
       for (const unsigned int k : {0u, 1u})
         if (level.model_solves[k] > 0)
           {

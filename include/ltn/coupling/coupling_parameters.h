@@ -41,5 +41,7 @@ namespace ltn
     double              tikhonov_parameter = 0;
     double              relative_tolerance = 1e-12;
     unsigned int        max_iterations     = 1000;
+    /** Precondition the reduced-space CG (ControlPreconditioner). */
+    bool precondition_controls = true;
   };
 } // namespace ltn

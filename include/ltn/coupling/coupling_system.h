@@ -62,6 +62,14 @@ namespace ltn
                       VectorType                &gradient_nonlocal,
                       VectorType                &gradient_local) const;
 
+    /**
+     * The diagonal of `B_k^T W B_k` over the degrees of freedom of model
+     * @p k (`B_k` is `E` or `-P`): how strongly the mismatch observes each
+     * degree of freedom directly, `sum_q w_q (B_k)_qi^2`.
+     */
+    VectorType
+    observation_diagonal(const unsigned int k) const;
+
     /** The number of controls of both models. */
     types::global_dof_index
     n_controls() const;
@@ -87,6 +95,13 @@ namespace ltn
     unsigned int                                 iterations = 0;
     /** The relative residual the solver reached. */
     double residual = 0;
+    /**
+     * The controls whose Hessian block the preconditioner of the
+     * reduced-space CG holds explicitly (ControlPreconditioner); 0 without.
+     */
+    unsigned int explicit_controls = 0;
+    /** Wall time to build that preconditioner. */
+    double preconditioner_setup_seconds = 0;
     /** Per model: its own solver's solves, iterations and memory. */
     std::array<ModelSolverStatistics, 2> model_solvers;
   };

@@ -83,6 +83,13 @@ namespace ltn
     TrilinosWrappers::MPI::Vector
     adjoint(const TrilinosWrappers::MPI::Vector &z) const;
 
+    /**
+     * `S^T x`: the entries of @p x (over the model's degrees of freedom) at
+     * the control degrees of freedom, as a vector of controls.
+     */
+    TrilinosWrappers::MPI::Vector
+    restrict_to_controls(const TrilinosWrappers::MPI::Vector &x) const;
+
     /** The solves so far and their iterations, summed over both kinds. */
     ModelSolverStatistics
     statistics() const;

@@ -15,12 +15,14 @@ namespace ltn
    * `d_0` the mismatch of the states with zero controls. Each CG iteration
    * costs one forward and one adjoint solve per model. The iteration stops
    * when the residual has dropped by @p relative_tolerance. The models'
-   * solvers are as @p model_solvers say.
+   * solvers are as @p model_solvers say. With @p precondition, CG is
+   * preconditioned by ControlPreconditioner.
    */
   template <int dim>
   CouplingSolution
   solve_reduced_space_cg(const CouplingSystem<dim> &system,
                          const double               relative_tolerance,
                          const unsigned int         max_iterations,
-                         const ModelSolverSettings &model_solvers);
+                         const ModelSolverSettings &model_solvers,
+                         const bool                 precondition);
 } // namespace ltn

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <ltn/coupling/reduced_hessian.h>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * A block-diagonal preconditioner for the reduced Hessian
+   * (doc/discretization.md, section 17):
+   *
+   *   P = diag(D_n + alpha I, H_ll),
+   *
+   * - `H_ll`, the Hessian block of the local controls (on `Gamma_c`),
+   *   computed column by column (one forward and one adjoint solve of the
+   *   local model per local control) and factored by Cholesky, replicated
+   *   on every rank. It carries the ill-conditioning: the high frequencies
+   *   along `Gamma_c` are damped within a few elements of it and barely seen
+   *   on the overlap, so its condition number grows like a power of `1/h`.
+   *   There are few of them: they live on an interface of the coarse mesh.
+   * - `D_n`, the diagonal of `S_n^T E^T W E S_n`: each control particle lies
+   *   in the overlap and is observed directly with its volume, which bounds
+   *   `H_nn` from below; its other part, through the nonlocal solve, is
+   *   smooth. The nonlocal controls fill a volume collar of particles, far
+   *   too many for explicit columns.
+   */
+  template <int dim>
+  class ControlPreconditioner
+  {
+  public:
+    using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
+
+    explicit ControlPreconditioner(const ReducedHessian<dim> &hessian);
+
+    void
+    vmult(BlockVectorType &dst, const BlockVectorType &src) const;
+
+    /** The number of local controls, the size of the explicit block. */
+    unsigned int
+    n_explicit_controls() const;
+
+  private:
+    MPI_Comm communicator;
+    /** `D_n + alpha I` over this rank's nonlocal controls. */
+    TrilinosWrappers::MPI::Vector nonlocal_diagonal;
+    /** The Cholesky factor of `H_ll`. */
+    LAPACKFullMatrix<double> local_block;
+  };
+} // namespace ltn

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <ltn/coupling/coupling_system.h>
+#include <ltn/coupling/model_solver.h>
+
+#include <array>
+#include <vector>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * The reduced Hessian `V^T B^T W B V + alpha I` of the optimality system as
+   * an operator on the controls `theta = [theta_n; theta_l]`, one block per
+   * model (doc/discretization.md, section 17): `V` maps the controls to the
+   * states through each model's own solver, `B = [E, -P]` takes the states
+   * to the overlap mismatch.
+   */
+  template <int dim>
+  class ReducedHessian
+  {
+  public:
+    using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
+
+    ReducedHessian(const CouplingSystem<dim>                &system,
+                   const std::array<const ModelSolver *, 2> &solvers);
+
+    /** A zero vector of controls. */
+    BlockVectorType
+    new_control_vector() const;
+
+    /** `V^T B^T W d` for a mismatch @p d at this rank's points. */
+    BlockVectorType
+    reduced_gradient(const std::vector<double> &d) const;
+
+    /** The mismatch of the fields for controls @p theta. */
+    std::vector<double>
+    mismatch(const BlockVectorType &theta, const bool with_data) const;
+
+    void
+    vmult(BlockVectorType &dst, const BlockVectorType &theta) const;
+
+    /**
+     * The diagonal block of model @p k applied to its controls @p theta_k:
+     * `V_k^T B_k^T W B_k V_k theta_k + alpha theta_k`, one forward and one
+     * adjoint solve of model @p k only.
+     */
+    TrilinosWrappers::MPI::Vector
+    block_vmult(const unsigned int                   k,
+                const TrilinosWrappers::MPI::Vector &theta_k) const;
+
+    const CouplingSystem<dim>               &system;
+    const std::array<const ModelSolver *, 2> solvers;
+  };
+} // namespace ltn

@@ -1,0 +1,103 @@
+#include <deal.II/base/mpi.h>
+
+#include <ltn/coupling/control_preconditioner.h>
+
+namespace ltn
+{
+  namespace
+  {
+    /** All entries of a distributed vector, on every rank. */
+    Vector<double>
+    replicate(const TrilinosWrappers::MPI::Vector &x, const MPI_Comm comm)
+    {
+      Vector<double> all(x.size());
+      for (const auto i : x.locally_owned_elements())
+        all(i) = x(i);
+      Utilities::MPI::sum(all, comm, all);
+      return all;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  ControlPreconditioner<dim>::ControlPreconditioner(
+    const ReducedHessian<dim> &hessian)
+    : communicator(hessian.system.communicator())
+  {
+    const ModelSolver &nonlocal = *hessian.solvers[nonlocal_model];
+    nonlocal_diagonal           = nonlocal.restrict_to_controls(
+      hessian.system.observation_diagonal(nonlocal_model));
+    // Every control particle is in the overlap; should a control of another
+    // nonlocal discretization be unobserved, it is scaled like the average.
+    const double mean_diagonal =
+      nonlocal_diagonal.size() > 0 ?
+        nonlocal_diagonal.l1_norm() / nonlocal_diagonal.size() :
+        0.;
+    for (const auto i : nonlocal_diagonal.locally_owned_elements())
+      nonlocal_diagonal(i) =
+        (nonlocal_diagonal(i) > 0 ? nonlocal_diagonal(i) : mean_diagonal) +
+        hessian.system.alpha;
+    nonlocal_diagonal.compress(VectorOperation::insert);
+
+    const ModelSolver  &local = *hessian.solvers[local_model];
+    const unsigned int  n     = local.new_control_vector().size();
+    std::vector<double> columns(static_cast<std::size_t>(n) * n);
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        TrilinosWrappers::MPI::Vector unit = local.new_control_vector();
+        if (unit.in_local_range(j))
+          unit(j) = 1.;
+        unit.compress(VectorOperation::insert);
+        const TrilinosWrappers::MPI::Vector column =
+          hessian.block_vmult(local_model, unit);
+        for (const auto i : column.locally_owned_elements())
+          columns[static_cast<std::size_t>(j) * n + i] = column(i);
+      }
+    Utilities::MPI::sum(columns, communicator, columns);
+
+    // The inner solves are exact only to their tolerance: symmetrize.
+    local_block.reinit(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        local_block(i, j) = 0.5 * (columns[std::size_t(j) * n + i] +
+                                   columns[std::size_t(i) * n + j]);
+    local_block.set_property(LAPACKSupport::symmetric);
+    if (n > 0)
+      local_block.compute_cholesky_factorization();
+  }
+
+
+
+  template <int dim>
+  void
+  ControlPreconditioner<dim>::vmult(BlockVectorType       &dst,
+                                    const BlockVectorType &src) const
+  {
+    for (const auto i : dst.block(nonlocal_model).locally_owned_elements())
+      dst.block(nonlocal_model)(i) =
+        src.block(nonlocal_model)(i) / nonlocal_diagonal(i);
+    dst.block(nonlocal_model).compress(VectorOperation::insert);
+
+    if (local_block.m() == 0)
+      return;
+    Vector<double> local = replicate(src.block(local_model), communicator);
+    local_block.solve(local);
+    for (const auto i : dst.block(local_model).locally_owned_elements())
+      dst.block(local_model)(i) = local(i);
+    dst.block(local_model).compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  unsigned int
+  ControlPreconditioner<dim>::n_explicit_controls() const
+  {
+    return local_block.m();
+  }
+
+  template class ControlPreconditioner<1>;
+  template class ControlPreconditioner<2>;
+  template class ControlPreconditioner<3>;
+} // namespace ltn
