@@ -1,0 +1,157 @@
+"""Error near the crack against wall time: coupled solves and all-peridynamic.
+
+usage: run.py [--ltn build/ltn] [--out DIR] [--scenes plate_2d bar_3d]
+              [--csv FILE] [--png FILE]
+
+For each scene, runs a sequence of resolutions (the particle spacing halves,
+the horizon stays two spacings) with every solver of the coupled problem and
+with LPS on the whole body ("all peridynamic", `Geometry/Models = nonlocal
+only`) at the same spacing. The error is that of the maximum crack opening,
+relative to a reference: the Richardson extrapolation of the all-peridynamic
+openings of the three resolutions with the first all-peridynamic solver listed
+(their observed order is printed and written to the CSV). Writes results.csv (one row per run) and
+error_vs_time.png (error against wall time of the whole run, one curve per
+solver, one panel per scene).
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+
+here = os.path.dirname(os.path.abspath(__file__))
+root = os.path.dirname(os.path.dirname(here))
+parser = argparse.ArgumentParser()
+parser.add_argument("--ltn", default=os.path.join(root, "build", "ltn"))
+parser.add_argument("--out", default=os.path.join(here, "runs"))
+parser.add_argument("--scenes", nargs="+", default=["plate_2d", "bar_3d"])
+parser.add_argument("--csv", default=os.path.join(here, "results.csv"))
+parser.add_argument("--png", default=os.path.join(here, "error_vs_time.png"))
+options = parser.parse_args()
+
+all_peridynamic = ["Geometry/Models=nonlocal only"]
+direct = ["Coupling/Model solvers=direct"]
+scalable = ["Coupling/Model solvers=preconditioned gmres",
+            "Nonlocal model/Operator=matrix-free",
+            "Coupling/Relative tolerance=1e-10",
+            "Coupling/Model solver tolerance=1e-12"]
+# Per scene: its parameter file, the settings of each resolution, and the
+# runs: name -> (settings, the resolutions it runs at, by index).
+scenes = {
+    "plate_2d": {
+        "prm": os.path.join(root, "parameter_files", "lps_plate_2d_crack.prm"),
+        "levels": [["Discretization/Mesh size=%g" % h]
+                   for h in (0.05, 0.025, 0.0125)],
+        "runs": {
+            "all peridynamic, gmres matrix-free":
+                (all_peridynamic + scalable, [0, 1, 2]),
+            # The sparse LU of 1.2M particle dofs does not fit: two levels.
+            "all peridynamic, direct": (all_peridynamic + direct, [0, 1]),
+            # The saddle-point LU fills in: minutes from the second level on.
+            "coupled, full space direct":
+                (["Coupling/Method=full space direct"], [0]),
+            "coupled, reduced space cg, direct":
+                (["Coupling/Method=reduced space cg"] + direct, [0, 1, 2]),
+            "coupled, reduced space cg, gmres matrix-free":
+                (["Coupling/Method=reduced space cg"] + scalable, [0, 1, 2]),
+        },
+    },
+    "bar_3d": {
+        "prm": os.path.join(here, "cracked_bar_3d.prm"),
+        "levels": [["Nonlocal model/Particle spacing to mesh size ratio=%g" % r,
+                    "Nonlocal model/Horizon to mesh size ratio=%g" % (2 * r)]
+                   for r in (1, 0.5, 0.25)],
+        "runs": {
+            "all peridynamic, gmres matrix-free":
+                (all_peridynamic + scalable, [0, 1, 2]),
+            "coupled, reduced space cg, direct":
+                (["Coupling/Method=reduced space cg"] + direct, [0, 1, 2]),
+            "coupled, reduced space cg, gmres matrix-free":
+                (["Coupling/Method=reduced space cg"] + scalable, [0, 1, 2]),
+        },
+    },
+}
+
+
+def run(scene, name, level, sets):
+    out = os.path.join(options.out, scene,
+                       name.replace(", ", "_").replace(" ", "_"),
+                       "level_%d" % level)
+    command = [options.ltn, scenes[scene]["prm"], "--output-dir", out,
+               "--set", "Output/Write VTU=false"]
+    for s in scenes[scene]["levels"][level] + sets:
+        command += ["--set", s]
+    subprocess.run(command, check=True, capture_output=True)
+    return json.load(open(os.path.join(out, "summary.json")))
+
+
+def extrapolate(values):
+    """Richardson limit and observed order of three values at h, h/2, h/4."""
+    a, b, c = values
+    if (a - b) * (b - c) <= 0 or a == b:
+        return c, float("nan")
+    ratio = (a - b) / (b - c)
+    return c - (b - c) / (ratio - 1), math.log2(ratio)
+
+
+rows = []
+for scene in options.scenes:
+    results = {}
+    for name, (sets, levels) in scenes[scene]["runs"].items():
+        for level in levels:
+            summary = run(scene, name, level, sets)
+            results[(name, level)] = summary
+            print(scene, name, level, summary["timings"]["total"],
+                  summary["mechanics"]["crack_openings"][0]["max_opening"],
+                  flush=True)
+    reference_runs = [name for name in scenes[scene]["runs"]
+                      if name.startswith("all peridynamic")]
+    openings = [results[(reference_runs[0], level)]["mechanics"]
+                ["crack_openings"][0]["max_opening"] for level in (0, 1, 2)]
+    reference, order = extrapolate(openings)
+    print(scene, "reference opening", reference, "observed order", order)
+    for (name, level), summary in results.items():
+        opening = summary["mechanics"]["crack_openings"][0]["max_opening"]
+        solver = summary["solver"]
+        rows.append({
+            "scene": scene,
+            "run": name,
+            "level": level,
+            "particle_dofs": summary["n_nonlocal_dofs"],
+            "local_dofs": summary["n_local_dofs"],
+            "iterations": solver.get("iterations", 0),
+            "solve_s": round(summary["timings"]["solve"], 2),
+            "total_s": round(summary["timings"]["total"], 2),
+            "memory_mb": round(summary["memory_mb"]),
+            "max_opening": "%.7g" % opening,
+            "reference_opening": "%.7g" % reference,
+            "observed_order": "%.2f" % order,
+            "error": "%.3g" % abs(opening / reference - 1),
+        })
+
+with open(options.csv, "w", newline="") as f:
+    writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+    writer.writeheader()
+    writer.writerows(rows)
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+shown = [s for s in scenes if s in options.scenes]
+figure, axes = plt.subplots(1, len(shown), figsize=(6 * len(shown), 4.5),
+                            squeeze=False)
+for axis, scene in zip(axes[0], shown):
+    for name in scenes[scene]["runs"]:
+        mine = [r for r in rows if r["scene"] == scene and r["run"] == name]
+        axis.loglog([r["total_s"] for r in mine],
+                    [float(r["error"]) for r in mine],
+                    "o--" if name.startswith("all") else "s-", label=name)
+    axis.set_title(scene + ": error of the max crack opening")
+    axis.set_xlabel("wall time of the run (s), 1 rank")
+    axis.set_ylabel("relative error")
+    axis.grid(True, which="both", alpha=0.3)
+    axis.legend(fontsize=7)
+figure.tight_layout()
+figure.savefig(options.png, dpi=120)
