@@ -1,29 +1,14 @@
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/lac/vector.h>
+
 #include <ltn/coupling/control_preconditioner.h>
 
 namespace ltn
 {
-  namespace
-  {
-    /** All entries of a distributed vector, on every rank. */
-    Vector<double>
-    replicate(const TrilinosWrappers::MPI::Vector &x, const MPI_Comm comm)
-    {
-      Vector<double> all(x.size());
-      for (const auto i : x.locally_owned_elements())
-        all(i) = x(i);
-      Utilities::MPI::sum(all, comm, all);
-      return all;
-    }
-  } // namespace
-
-
-
   template <int dim>
   ControlPreconditioner<dim>::ControlPreconditioner(
     const ReducedHessian<dim> &hessian)
-    : communicator(hessian.system.communicator())
   {
     const ModelSolver &nonlocal = *hessian.solvers[nonlocal_model];
     nonlocal_diagonal           = nonlocal.restrict_to_controls(
@@ -54,7 +39,7 @@ namespace ltn
         for (const auto i : column.locally_owned_elements())
           columns[static_cast<std::size_t>(j) * n + i] = column(i);
       }
-    Utilities::MPI::sum(columns, communicator, columns);
+    Utilities::MPI::sum(columns, hessian.system.communicator(), columns);
 
     // The inner solves are exact only to their tolerance: symmetrize.
     local_block.reinit(n, n);
@@ -81,7 +66,8 @@ namespace ltn
 
     if (local_block.m() == 0)
       return;
-    Vector<double> local = replicate(src.block(local_model), communicator);
+    // All local controls on every rank (deal.II gathers the vector).
+    Vector<double> local(src.block(local_model));
     local_block.solve(local);
     for (const auto i : dst.block(local_model).locally_owned_elements())
       dst.block(local_model)(i) = local(i);

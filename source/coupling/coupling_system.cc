@@ -75,28 +75,15 @@ namespace ltn
                                          VectorType &gradient_nonlocal,
                                          VectorType &gradient_local) const
   {
-    // Contributions go to degrees of freedom other ranks own: accumulate in
-    // writable ghosted vectors, then add them up where they are owned.
-    std::array<VectorType, 2> gradient;
-    for (const unsigned int k : {0u, 1u})
-      gradient[k].reinit(models[k]->owned,
-                         overlap_columns[k],
-                         models[k]->communicator,
-                         true);
-    for (std::size_t q = 0; q < d.size(); ++q)
-      {
-        const double wd = overlap.weights[q] * d[q];
-        for (const auto &[i, e] : overlap.nonlocal_rows[q])
-          gradient[nonlocal_model](i) += e * wd;
-        for (const auto &[j, p] : overlap.local_rows[q])
-          gradient[local_model](j) -= p * wd;
-      }
-    for (const unsigned int k : {0u, 1u})
-      gradient[k].compress(VectorOperation::add);
-    gradient_nonlocal = models[nonlocal_model]->new_vector();
-    gradient_local    = models[local_model]->new_vector();
-    gradient_nonlocal = gradient[nonlocal_model];
-    gradient_local    = gradient[local_model];
+    // B = [E, -P]: the local rows enter with a minus sign.
+    gradient_nonlocal =
+      sum_over_rows(nonlocal_model, [&](const std::size_t q, const double e) {
+        return e * overlap.weights[q] * d[q];
+      });
+    gradient_local =
+      sum_over_rows(local_model, [&](const std::size_t q, const double p) {
+        return -p * overlap.weights[q] * d[q];
+      });
   }
 
 
@@ -105,19 +92,34 @@ namespace ltn
   typename CouplingSystem<dim>::VectorType
   CouplingSystem<dim>::observation_diagonal(const unsigned int k) const
   {
-    VectorType diagonal;
-    diagonal.reinit(models[k]->owned,
-                    overlap_columns[k],
-                    models[k]->communicator,
-                    true);
+    return sum_over_rows(k, [&](const std::size_t q, const double b) {
+      return overlap.weights[q] * b * b;
+    });
+  }
+
+
+
+  template <int dim>
+  typename CouplingSystem<dim>::VectorType
+  CouplingSystem<dim>::sum_over_rows(
+    const unsigned int                                k,
+    const std::function<double(std::size_t, double)> &contribution) const
+  {
+    // Contributions go to degrees of freedom other ranks own: accumulate in
+    // a writable ghosted vector, then add them up where they are owned.
+    VectorType sum;
+    sum.reinit(models[k]->owned,
+               overlap_columns[k],
+               models[k]->communicator,
+               true);
     const auto &rows =
       (k == nonlocal_model) ? overlap.nonlocal_rows : overlap.local_rows;
     for (std::size_t q = 0; q < rows.size(); ++q)
       for (const auto &[i, b] : rows[q])
-        diagonal(i) += overlap.weights[q] * b * b;
-    diagonal.compress(VectorOperation::add);
+        sum(i) += contribution(q, b);
+    sum.compress(VectorOperation::add);
     VectorType owned = models[k]->new_vector();
-    owned            = diagonal;
+    owned            = sum;
     return owned;
   }
 

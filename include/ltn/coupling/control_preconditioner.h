@@ -44,7 +44,6 @@ namespace ltn
     n_explicit_controls() const;
 
   private:
-    MPI_Comm communicator;
     /** `D_n + alpha I` over this rank's nonlocal controls. */
     TrilinosWrappers::MPI::Vector nonlocal_diagonal;
     /** The Cholesky factor of `H_ll`. */

@@ -9,6 +9,7 @@
 #include <ltn/coupling/overlap_quadrature.h>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace ltn
@@ -85,6 +86,17 @@ namespace ltn
      * rank's overlap points touch.
      */
     std::array<IndexSet, 2> overlap_columns;
+
+  private:
+    /**
+     * `sum_q sum_{(i, b) in row q of B_k} contribution(q, b) e_i` over the
+     * owned degrees of freedom of model @p k, for the unsigned rows `E_q`
+     * or `P_q` of this rank's points.
+     */
+    VectorType
+    sum_over_rows(
+      const unsigned int                                k,
+      const std::function<double(std::size_t, double)> &contribution) const;
   };
 
   /** A solution of the optimality system, with the solver's statistics. */
