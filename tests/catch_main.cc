@@ -4,11 +4,14 @@
 #define CATCH_CONFIG_RUNNER
 #include <deal.II/base/mpi.h>
 
+#include <ltn/base/blas_threads.h>
+
 #include <catch2/catch.hpp>
 
 int
 main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  ltn::use_one_blas_thread();
   return Catch::Session().run(argc, argv);
 }

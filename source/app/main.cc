@@ -8,6 +8,7 @@
 #include <ltn/app/diffusion_scene.h>
 #include <ltn/app/elasticity_scene.h>
 #include <ltn/app/parameter_reading.h>
+#include <ltn/base/blas_threads.h>
 #include <ltn/base/input_error.h>
 #include <ltn/base/memory.h>
 #include <ltn/output/console_table.h>
@@ -135,6 +136,7 @@ main(int argc, char **argv)
 {
   using namespace dealii;
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  ltn::use_one_blas_thread();
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   ConditionalOStream pcout(std::cout, root);
 

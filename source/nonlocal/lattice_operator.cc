@@ -3,6 +3,7 @@
 #include <ltn/nonlocal/lattice_operator.h>
 
 #include <algorithm>
+#include <bitset>
 #include <map>
 
 namespace ltn
@@ -13,7 +14,7 @@ namespace ltn
     const std::vector<LatticeIndex>                            &offsets,
     const unsigned int                                          n_components,
     const IndexSet                                             &owned_particles,
-    const std::function<bool(const LatticeIndex &)>            &shares_stencil,
+    const std::function<unsigned int(const LatticeIndex &)>    &shared_rows_of,
     const std::function<void(types::global_dof_index, Rows &)> &rows_of,
     const MPI_Comm                                              communicator)
     : lattice(lattice)
@@ -74,21 +75,27 @@ namespace ltn
         p = std::min(line.end, end);
       }
 
-    shares.resize(reach_end - reach_first);
+    all_rows = (1u << n_components) - 1;
+    shared.resize(reach_end - reach_first);
     for (auto p = reach_first; p < reach_end; ++p)
-      shares[p - reach_first] = shares_stencil(lattice.index(p)) ? 1 : 0;
+      shared[p - reach_first] = shared_rows_of(lattice.index(p)) & all_rows;
 
-    // The shared row, read from the first particle that has it.
+    // Each component's shared row, read from the first particle that has it.
     blocks.assign((offsets.size() + 1) * n_components * n_components, 0.);
-    const auto reference = std::find(shares.begin(), shares.end(), 1);
-    Rows       rows(n_components);
-    if (reference != shares.end())
+    Rows rows(n_components);
+    for (unsigned int a = 0; a < n_components; ++a)
       {
+        const auto reference =
+          std::find_if(shared.begin(), shared.end(), [a](const auto mask) {
+            return (mask >> a) & 1u;
+          });
+        if (reference == shared.end())
+          continue;
         const types::global_dof_index p =
-          reach_first + (reference - shares.begin());
+          reach_first + (reference - shared.begin());
         const LatticeIndex index = lattice.index(p);
         rows_of(p, rows);
-        for (unsigned int a = 0; a < n_components; ++a)
+        {
           for (const auto &[column, value] : rows[a])
             {
               const LatticeIndex other = lattice.index(column / n_components);
@@ -107,9 +114,10 @@ namespace ltn
               blocks[(k * n_components + a) * n_components +
                      column % n_components] += value;
             }
+        }
       }
 
-    // The rows of the other particles, stored.
+    // The other rows, stored.
     const types::global_dof_index n_dofs = n_components * lattice.n_particles();
     owned_dofs                           = IndexSet(n_dofs);
     owned_dofs.add_range(n_components * first, n_components * end);
@@ -117,13 +125,25 @@ namespace ltn
     relevant.add_range(n_components * reach_first, n_components * reach_end);
     IndexSet stored(lattice.n_particles());
     for (auto p = first; p < end; ++p)
-      if (!shares[p - reach_first])
-        stored.add_index(p);
+      if (shared[p - reach_first] != all_rows)
+        {
+          stored.add_index(p);
+          n_own_rows +=
+            n_components - std::bitset<8>(shared[p - reach_first]).count();
+        }
     stored.compress();
-    n_own_rows = stored.n_elements();
     IndexSet read;
     assemble_rows(
-      stored, n_components, rows_of, owned_dofs, communicator, own_rows, read);
+      stored,
+      n_components,
+      rows_of,
+      [this](const types::global_dof_index p) {
+        return all_rows & ~static_cast<unsigned int>(shared[p - reach_first]);
+      },
+      owned_dofs,
+      communicator,
+      own_rows,
+      read);
 
     ghosted.reinit(owned_dofs, relevant, communicator);
     // The products index the imported values by `number - reach_first`.
@@ -148,9 +168,27 @@ namespace ltn
     std::vector<std::int64_t> origin(n_offsets);
     std::vector<std::int64_t> lo(n_offsets), hi(n_offsets);
     const double             *centre = &blocks[n_offsets * n_c * n_c];
-    const unsigned char      *share  = shares.data();
+    const unsigned char      *mask   = shared.data();
     const std::int64_t        base   = reach_first;
+    constexpr unsigned int    full   = (1u << n_c) - 1;
     std::array<double, n_c>   sum;
+    // sum += block x (rows a of the mask) or block^T x (x read at rows a).
+    const auto add =
+      [&sum](const double *block, const double *x, const unsigned int rows) {
+        for (int a = 0; a < n_c; ++a)
+          {
+            // Most particles have all rows shared: a predictable branch.
+            if (rows != full && !((rows >> a) & 1u))
+              continue;
+            for (int b = 0; b < n_c; ++b)
+              {
+                if (transpose)
+                  sum[b] += block[a * n_c + b] * x[a];
+                else
+                  sum[a] += block[a * n_c + b] * x[b];
+              }
+          }
+      };
     for (auto p = first; p < end;)
       {
         const LatticeIndex index = lattice.index(p);
@@ -168,42 +206,33 @@ namespace ltn
         const types::global_dof_index line_end = std::min(line.end, end);
         for (; p < line_end; ++p)
           {
-            const std::int64_t i  = p;
-            const double      *xi = x + (i - base) * n_c;
+            const std::int64_t i    = p;
+            const double      *xi   = x + (i - base) * n_c;
+            const unsigned int rows = mask[i - base];
             sum.fill(0.);
             if (!transpose)
               {
-                if (share[i - base])
+                if (rows != 0)
                   {
-                    for (int a = 0; a < n_c; ++a)
-                      for (int b = 0; b < n_c; ++b)
-                        sum[a] += centre[a * n_c + b] * xi[b];
+                    add(centre, xi, rows);
                     for (unsigned int k = 0; k < n_offsets; ++k)
-                      {
-                        const double *block = &blocks[k * n_c * n_c];
-                        const double *xj    = x + (origin[k] + i - base) * n_c;
-                        for (int a = 0; a < n_c; ++a)
-                          for (int b = 0; b < n_c; ++b)
-                            sum[a] += block[a * n_c + b] * xj[b];
-                      }
+                      add(&blocks[k * n_c * n_c],
+                          x + (origin[k] + i - base) * n_c,
+                          rows);
                   }
               }
             else
               {
-                if (share[i - base])
-                  for (int a = 0; a < n_c; ++a)
-                    for (int b = 0; b < n_c; ++b)
-                      sum[b] += centre[a * n_c + b] * xi[a];
+                if (rows != 0)
+                  add(centre, xi, rows);
                 for (unsigned int k = 0; k < n_offsets; ++k)
                   {
                     const std::int64_t j = origin[k] + i;
-                    if (j < lo[k] || j >= hi[k] || !share[j - base])
+                    if (j < lo[k] || j >= hi[k] || mask[j - base] == 0)
                       continue;
-                    const double *block = &blocks[reverse[k] * n_c * n_c];
-                    const double *xj    = x + (j - base) * n_c;
-                    for (int a = 0; a < n_c; ++a)
-                      for (int b = 0; b < n_c; ++b)
-                        sum[b] += block[a * n_c + b] * xj[a];
+                    add(&blocks[reverse[k] * n_c * n_c],
+                        x + (j - base) * n_c,
+                        mask[j - base]);
                   }
               }
             double *yi = y + (i - static_cast<std::int64_t>(first)) * n_c;
@@ -280,7 +309,7 @@ namespace ltn
   std::size_t
   LatticeOperator<dim>::memory_consumption() const
   {
-    return shares.size() + blocks.size() * sizeof(double) +
+    return shared.size() + blocks.size() * sizeof(double) +
            own_rows.memory_consumption() + ghosted.memory_consumption() +
            offsets.size() * sizeof(LatticeIndex);
   }
@@ -310,8 +339,8 @@ namespace ltn
     const std::vector<typename ParticleLattice<dim>::LatticeIndex> &offsets,
     const unsigned int                                       n_components,
     const IndexSet                                          &owned_particles,
-    const std::function<bool(
-      const typename ParticleLattice<dim>::LatticeIndex &)> &shares_stencil,
+    const std::function<unsigned int(
+      const typename ParticleLattice<dim>::LatticeIndex &)> &shared_rows_of,
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
     const bool     matrix_free,
     DiscreteModel &model)
@@ -323,7 +352,7 @@ namespace ltn
                                                  offsets,
                                                  n_components,
                                                  owned_particles,
-                                                 shares_stencil,
+                                                 shared_rows_of,
                                                  rows_of,
                                                  model.communicator);
         model.relevant    = op->relevant_dofs();
@@ -333,13 +362,17 @@ namespace ltn
     else
       {
         model.matrix_free.reset();
-        assemble_rows(owned_particles,
-                      n_components,
-                      rows_of,
-                      model.owned,
-                      model.communicator,
-                      model.matrix,
-                      model.relevant);
+        assemble_rows(
+          owned_particles,
+          n_components,
+          rows_of,
+          [n_components](types::global_dof_index) {
+            return (1u << n_components) - 1;
+          },
+          model.owned,
+          model.communicator,
+          model.matrix,
+          model.relevant);
       }
   }
 
@@ -350,7 +383,7 @@ namespace ltn
     const std::vector<typename ParticleLattice<dim>::LatticeIndex> &,     \
     const unsigned int,                                                   \
     const IndexSet &,                                                     \
-    const std::function<bool(                                             \
+    const std::function<unsigned int(                                     \
       const typename ParticleLattice<dim>::LatticeIndex &)> &,            \
     const std::function<void(types::global_dof_index, ParticleRows &)> &, \
     const bool,                                                           \

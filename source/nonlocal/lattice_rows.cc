@@ -9,10 +9,11 @@ namespace ltn
     const IndexSet    &particles,
     const unsigned int n_components,
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
-    const IndexSet                 &owned_dofs,
-    const MPI_Comm                  communicator,
-    TrilinosWrappers::SparseMatrix &matrix,
-    IndexSet                       &relevant)
+    const std::function<unsigned int(types::global_dof_index)> &stored_rows_of,
+    const IndexSet                                             &owned_dofs,
+    const MPI_Comm                                              communicator,
+    TrilinosWrappers::SparseMatrix                             &matrix,
+    IndexSet                                                   &relevant)
   {
     const auto n_dofs = owned_dofs.size();
     // One pass for the pattern of the owned rows and the ghosts they reach,
@@ -25,38 +26,42 @@ namespace ltn
     for (const auto p : particles)
       {
         rows_of(p, rows);
+        const unsigned int stored = stored_rows_of(p);
         for (unsigned int c = 0; c < n_components; ++c)
-          {
-            columns.clear();
-            for (const auto &entry : rows[c])
-              columns.push_back(entry.first);
-            std::sort(columns.begin(), columns.end());
-            dsp.add_entries(n_components * p + c,
-                            columns.begin(),
-                            columns.end(),
-                            true);
-            relevant.add_indices(columns.begin(), columns.end());
-          }
+          if ((stored >> c) & 1u)
+            {
+              columns.clear();
+              for (const auto &entry : rows[c])
+                columns.push_back(entry.first);
+              std::sort(columns.begin(), columns.end());
+              dsp.add_entries(n_components * p + c,
+                              columns.begin(),
+                              columns.end(),
+                              true);
+              relevant.add_indices(columns.begin(), columns.end());
+            }
       }
     relevant.compress();
     matrix.reinit(owned_dofs, owned_dofs, dsp, communicator);
     for (const auto p : particles)
       {
         rows_of(p, rows);
+        const unsigned int stored = stored_rows_of(p);
         for (unsigned int c = 0; c < n_components; ++c)
-          {
-            columns.clear();
-            values.clear();
-            for (const auto &[column, value] : rows[c])
-              {
-                columns.push_back(column);
-                values.push_back(value);
-              }
-            matrix.set(n_components * p + c,
-                       columns.size(),
-                       columns.data(),
-                       values.data());
-          }
+          if ((stored >> c) & 1u)
+            {
+              columns.clear();
+              values.clear();
+              for (const auto &[column, value] : rows[c])
+                {
+                  columns.push_back(column);
+                  values.push_back(value);
+                }
+              matrix.set(n_components * p + c,
+                         columns.size(),
+                         columns.data(),
+                         values.data());
+            }
       }
     matrix.compress(VectorOperation::insert);
   }

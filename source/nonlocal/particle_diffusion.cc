@@ -76,7 +76,9 @@ namespace ltn
       stencil.offsets(),
       1,
       model.owned,
-      [this](const LatticeIndex &index) { return lattice.inside(index); },
+      [this](const LatticeIndex &index) {
+        return lattice.inside(index) ? 1u : 0u;
+      },
       [this](const types::global_dof_index i, ParticleRows &rows) {
         particle_rows(i, rows);
       },

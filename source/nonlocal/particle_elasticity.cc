@@ -38,6 +38,24 @@ namespace ltn
           }
         crack_neighbourhoods.push_back(box);
       }
+    has_cut_bond.resize(lattice.n_particles());
+    std::vector<bool> intact;
+    for (types::global_dof_index n = 0; n < lattice.n_particles(); ++n)
+      {
+        const LatticeIndex index = lattice.index(n);
+        if (!near_crack(lattice.position(index)))
+          continue;
+        intact_bonds(index, intact);
+        for (std::size_t k = 0; k < intact.size(); ++k)
+          {
+            LatticeIndex neighbour = index;
+            for (unsigned int d = 0; d < dim; ++d)
+              neighbour[d] += stencil.offsets()[k][d];
+            has_cut_bond[n] = has_cut_bond[n] ||
+                              (!intact[k] && lattice.number(neighbour) !=
+                                               ParticleLattice<dim>::invalid);
+          }
+      }
 
     owned_particles = even_partition(lattice.n_particles(), communicator);
     const types::global_dof_index n_dofs = n_components * lattice.n_particles();
@@ -50,7 +68,6 @@ namespace ltn
                                 n_components));
     model.controls = IndexSet(n_dofs);
     model.fixed    = IndexSet(n_dofs);
-    std::vector<bool> intact;
     for (const auto n : owned_particles)
       {
         const LatticeIndex index = lattice.index(n);
@@ -154,23 +171,28 @@ namespace ltn
 
 
   template <int dim>
-  bool
-  ParticleElasticity<dim>::shares_stencil(const LatticeIndex &index) const
+  unsigned int
+  ParticleElasticity<dim>::shared_rows(const LatticeIndex &index) const
   {
-    if (!lattice.inside(index))
-      return false;
-    // Neither the particle's bonds nor its neighbours' can be cut.
-    const Point<dim> x = lattice.position(index);
-    for (const auto &box : crack_neighbourhoods)
+    const auto n = lattice.number(index);
+    if (n == ParticleLattice<dim>::invalid || has_cut_bond[n])
+      return 0;
+    unsigned int rows = complete(index) ? 1u << dim : 0u;
+    if (lattice.inside(index))
       {
-        bool near = true;
-        for (unsigned int d = 0; d < dim; ++d)
-          near = near && x[d] >= box.lower[d] - eps - spacing &&
-                 x[d] <= box.upper[d] + eps + spacing;
-        if (near)
-          return false;
+        bool neighbours_intact = true;
+        for (const auto &o : stencil.offsets())
+          {
+            LatticeIndex neighbour = index;
+            for (unsigned int d = 0; d < dim; ++d)
+              neighbour[d] += o[d];
+            neighbours_intact =
+              neighbours_intact && !has_cut_bond[lattice.number(neighbour)];
+          }
+        if (neighbours_intact)
+          rows |= (1u << dim) - 1;
       }
-    return true;
+    return rows;
   }
 
 
@@ -271,7 +293,7 @@ namespace ltn
       stencil.offsets(),
       n_components,
       owned_particles,
-      [this](const LatticeIndex &index) { return shares_stencil(index); },
+      [this](const LatticeIndex &index) { return shared_rows(index); },
       [this](const types::global_dof_index n, Rows &rows) {
         particle_rows(n, rows);
       },

@@ -31,7 +31,6 @@ namespace ltn
                      const std::string                   &directory,
                      const std::string                   &name)
   {
-    const auto         &owned     = nonlocal.get_model().owned;
     const auto          positions = nonlocal.owned_positions();
     std::vector<double> values(field.begin(), field.end());
     std::vector<std::pair<std::string, std::vector<double>>> fields;

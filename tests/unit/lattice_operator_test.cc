@@ -122,7 +122,7 @@ namespace
     CHECK(difference < 1e-13);
     // The shared stencil serves most particles, not all.
     CHECK(op.n_stored_rows() > 0);
-    CHECK(op.n_stored_rows() < n);
+    CHECK(op.n_stored_rows() < (dim + 1) * n);
     auto rhs_difference = assembled.get_model().rhs;
     rhs_difference -= matrix_free.get_model().rhs;
     CHECK(rhs_difference.linfty_norm() == 0);

@@ -21,18 +21,21 @@ namespace ltn
   /**
    * A particle model's operator without its matrix (doc/discretization.md,
    * section 15). A particle away from boundaries, collar and cracks has the
-   * same row as every other such particle up to the shift of its numbers:
+   * same rows as every other such particle up to the shift of its numbers:
    * a dense `n_components x n_components` block per bond offset `o_k` and
    * one for the particle itself,
    *
    *   (M x)_i = C x_i + sum_k B_k x_{i + o_k},
    *
-   * stored once. Only the other particles' rows are stored, as a sparse
-   * matrix (`own_rows`). Degrees of freedom are numbered particle by
-   * particle, `n_components p + c`.
+   * stored once. Near boundaries some of a particle's component rows may
+   * still be the shared ones (the dilatation row of LPS in the first horizon
+   * of the collar, where the displacement rows are identities); a mask per
+   * particle says which. Only the other rows are stored, as a sparse matrix
+   * (`own_rows`). Degrees of freedom are numbered particle by particle,
+   * `n_components p + c`.
    *
    * `Tvmult` gathers too: `(M^T y)_j = C^T y_j + sum_k B_k^T y_{j - o_k}`
-   * over the shared-stencil particles `j - o_k`, plus `own_rows^T y`. Both
+   * over the shared rows of the particles `j - o_k`, plus `own_rows^T y`. Both
    * read this rank's particles and the contiguous range of numbers that
    * their bonds reach, imported once per product.
    */
@@ -49,16 +52,17 @@ namespace ltn
      *   shared-stencil row reads only these neighbours and the particle.
      * @param n_components degrees of freedom per particle.
      * @param owned_particles this rank's particles, a contiguous range.
-     * @param shares_stencil which particles have the shared row.
+     * @param shared_rows_of per particle, the mask of its component rows
+     *   (bit `c` for component `c`) that are the shared ones.
      * @param rows_of the row of any particle, for those that do not and
      *   to read the shared one from.
      */
     LatticeOperator(
-      const ParticleLattice<dim>                      &lattice,
-      const std::vector<LatticeIndex>                 &offsets,
-      const unsigned int                               n_components,
-      const IndexSet                                  &owned_particles,
-      const std::function<bool(const LatticeIndex &)> &shares_stencil,
+      const ParticleLattice<dim>                              &lattice,
+      const std::vector<LatticeIndex>                         &offsets,
+      const unsigned int                                       n_components,
+      const IndexSet                                          &owned_particles,
+      const std::function<unsigned int(const LatticeIndex &)> &shared_rows_of,
       const std::function<void(types::global_dof_index, Rows &)> &rows_of,
       const MPI_Comm                                              communicator);
 
@@ -77,7 +81,7 @@ namespace ltn
     const IndexSet &
     relevant_dofs() const;
 
-    /** The number of particles of all ranks whose rows are stored. */
+    /** The number of component rows of all ranks that are stored. */
     types::global_dof_index
     n_stored_rows() const;
 
@@ -98,8 +102,10 @@ namespace ltn
     const unsigned int        n_components;
     /** This rank's particles `[first, end)`, and the range they reach. */
     types::global_dof_index first, end, reach_first, reach_end;
-    /** Per particle of the reached range: does it have the shared row? */
-    std::vector<unsigned char> shares;
+    /** Per particle of the reached range: the mask of its shared rows. */
+    std::vector<unsigned char> shared;
+    /** The mask of all `n_components` rows. */
+    unsigned int all_rows;
     /** `B_k` for every offset, then `C`: row-major blocks. */
     std::vector<double>                   blocks;
     TrilinosWrappers::SparseMatrix        own_rows;
@@ -122,8 +128,8 @@ namespace ltn
     const std::vector<typename ParticleLattice<dim>::LatticeIndex> &offsets,
     const unsigned int                                       n_components,
     const IndexSet                                          &owned_particles,
-    const std::function<bool(
-      const typename ParticleLattice<dim>::LatticeIndex &)> &shares_stencil,
+    const std::function<unsigned int(
+      const typename ParticleLattice<dim>::LatticeIndex &)> &shared_rows_of,
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
     const bool     matrix_free,
     DiscreteModel &model);

@@ -21,17 +21,19 @@ namespace ltn
   /**
    * Assemble into @p matrix (rows and columns over @p owned_dofs) the rows
    * of @p particles, this rank's, @p n_components degrees of freedom each
-   * (numbered `n_components p + c`), each row given by @p rows_of; the rows
-   * of other owned particles stay empty. @p relevant becomes @p owned_dofs
-   * and the columns the rows read.
+   * (numbered `n_components p + c`), each row given by @p rows_of, of the
+   * components in the mask @p stored_rows_of (bit `c` for component `c`);
+   * the other rows stay empty. @p relevant becomes @p owned_dofs and the
+   * columns the rows read.
    */
   void
   assemble_rows(
     const IndexSet    &particles,
     const unsigned int n_components,
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
-    const IndexSet                 &owned_dofs,
-    const MPI_Comm                  communicator,
-    TrilinosWrappers::SparseMatrix &matrix,
-    IndexSet                       &relevant);
+    const std::function<unsigned int(types::global_dof_index)> &stored_rows_of,
+    const IndexSet                                             &owned_dofs,
+    const MPI_Comm                                              communicator,
+    TrilinosWrappers::SparseMatrix                             &matrix,
+    IndexSet                                                   &relevant);
 } // namespace ltn

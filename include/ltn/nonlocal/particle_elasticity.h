@@ -84,11 +84,14 @@ namespace ltn
     particle_rows(const types::global_dof_index n, Rows &rows) const;
 
     /**
-     * Does the particle at @p index have the row every particle far from
-     * cracks and the collar shares (LatticeOperator)?
+     * Which rows of the particle at @p index (bit `c` for component `c`)
+     * are the rows every particle far from cracks and the collar shares
+     * (LatticeOperator): none if one of its bonds is cut; the dilatation's
+     * if its neighbourhood is complete; the displacement's in `Omega_n`
+     * unless a neighbour has a cut bond (its weighted volume differs).
      */
-    bool
-    shares_stencil(const LatticeIndex &index) const;
+    unsigned int
+    shared_rows(const LatticeIndex &index) const;
 
     const DiscreteModel &
     get_model() const;
@@ -185,7 +188,9 @@ namespace ltn
     const ParticleLattice<dim>    lattice;
     /** The cracks' boxes widened by the horizon: where bonds can be cut. */
     std::vector<Box<dim>> crack_neighbourhoods;
-    IndexSet              owned_particles;
-    DiscreteModel         model;
+    /** Per particle of the lattice: is one of its bonds cut? */
+    std::vector<bool> has_cut_bond;
+    IndexSet          owned_particles;
+    DiscreteModel     model;
   };
 } // namespace ltn
