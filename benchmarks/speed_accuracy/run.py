@@ -36,6 +36,9 @@ scalable = ["Coupling/Model solvers=preconditioned gmres",
             "Nonlocal model/Operator=matrix-free",
             "Coupling/Relative tolerance=1e-10",
             "Coupling/Model solver tolerance=1e-12"]
+# The full-space GMRES solves each model loosely inside its preconditioner.
+full_space_gmres = (["Coupling/Method=full space gmres"] + scalable +
+                    ["Coupling/Model solver tolerance=1e-1"])
 # Per scene: its parameter file, the settings of each resolution, and the
 # runs: name -> (settings, the resolutions it runs at, by index).
 scenes = {
@@ -55,6 +58,8 @@ scenes = {
                 (["Coupling/Method=reduced space cg"] + direct, [0, 1, 2]),
             "coupled, reduced space cg, gmres matrix-free":
                 (["Coupling/Method=reduced space cg"] + scalable, [0, 1, 2]),
+            "coupled, full space gmres, matrix-free":
+                (full_space_gmres, [0, 1, 2]),
         },
     },
     "bar_3d": {
@@ -69,6 +74,8 @@ scenes = {
                 (["Coupling/Method=reduced space cg"] + direct, [0, 1, 2]),
             "coupled, reduced space cg, gmres matrix-free":
                 (["Coupling/Method=reduced space cg"] + scalable, [0, 1, 2]),
+            "coupled, full space gmres, matrix-free":
+                (full_space_gmres, [0, 1, 2]),
         },
     },
 }

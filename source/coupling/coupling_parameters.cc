@@ -1,6 +1,7 @@
 #include <ltn/base/input_error.h>
 #include <ltn/coupling/coupling_parameters.h>
 #include <ltn/coupling/full_space_direct_solver.h>
+#include <ltn/coupling/full_space_gmres_solver.h>
 #include <ltn/coupling/reduced_space_solver.h>
 
 namespace ltn
@@ -13,13 +14,18 @@ namespace ltn
       prm.declare_entry("Method",
                         "full space direct",
                         Patterns::Selection("full space direct|"
+                                            "full space gmres|"
                                             "reduced space cg"),
                         "How to solve the optimality system: `full space "
                         "direct` (states, controls and multipliers in one "
-                        "saddle-point system, sparse direct solver) or "
-                        "`reduced space cg` (CG on the controls; each "
-                        "iteration one forward and one adjoint solve per "
-                        "model).");
+                        "saddle-point system, sparse direct solver), `full "
+                        "space gmres` (the same system unassembled, flexible "
+                        "GMRES preconditioned by block elimination with "
+                        "each model's solver, two forward and two adjoint "
+                        "solves per model and iteration; set a loose Model "
+                        "solver tolerance such as 1e-3) or `reduced space "
+                        "cg` (CG on the controls; each iteration one forward "
+                        "and one adjoint solve per model).");
       prm.declare_entry("Tikhonov parameter",
                         "0",
                         Patterns::Double(0),
@@ -29,12 +35,12 @@ namespace ltn
                         "1e-12",
                         Patterns::Double(0),
                         "Reduction of the residual at which the reduced-space "
-                        "CG stops.");
+                        "CG or the full-space GMRES stops.");
       prm.declare_entry("Maximum iterations",
                         "1000",
                         Patterns::Integer(1),
-                        "Iteration limit of the reduced-space CG and of each "
-                        "model solve.");
+                        "Iteration limit of the reduced-space CG, the "
+                        "full-space GMRES and each model solve.");
       prm.declare_entry("Control preconditioner",
                         "block diagonal",
                         Patterns::Selection("block diagonal|none"),
@@ -59,7 +65,8 @@ namespace ltn
                         Patterns::Double(0),
                         "Residual reduction, relative to the right-hand "
                         "side, at which a model's GMRES stops. Keep it below "
-                        "the Relative tolerance of the outer CG.");
+                        "the Relative tolerance of the outer CG; inside the "
+                        "full-space GMRES's preconditioner it may be loose.");
     }
     prm.leave_subsection();
   }
@@ -111,9 +118,9 @@ namespace ltn
     check_input(!coupled || method != "full space direct",
                 "Coupling/Method",
                 method,
-                "`reduced space cg` with Nonlocal model/Operator = "
-                "matrix-free (the full-space direct solver needs the "
-                "assembled matrix)");
+                "`reduced space cg` or `full space gmres` with Nonlocal "
+                "model/Operator = matrix-free (the full-space direct solver "
+                "needs the assembled matrix)");
   }
 
 
@@ -128,6 +135,11 @@ namespace ltn
                                     max_iterations,
                                     model_solvers,
                                     precondition_controls);
+    if (method == "full space gmres")
+      return solve_full_space_gmres(system,
+                                    relative_tolerance,
+                                    max_iterations,
+                                    model_solvers);
     return solve_full_space_direct(system);
   }
 

@@ -1,9 +1,9 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
-#include <ltn/base/input_error.h>
 #include <ltn/base/partition.h>
 #include <ltn/coupling/model_solver.h>
+#include <ltn/coupling/no_convergence.h>
 
 namespace ltn
 {
@@ -112,13 +112,11 @@ namespace ltn
       }
     catch (const SolverControl::NoConvergence &)
       {
-        throw std::runtime_error(
-          "a model's GMRES did not reduce the residual by Coupling/Model "
-          "solver tolerance = " +
-          to_string(settings.relative_tolerance) +
-          " within Coupling/Maximum iterations = " +
-          std::to_string(settings.max_iterations) + " (relative residual " +
-          to_string(control.last_value() / b_norm) + ")");
+        throw no_convergence("a model's GMRES",
+                             "Coupling/Model solver tolerance",
+                             settings.relative_tolerance,
+                             settings.max_iterations,
+                             control.last_value() / b_norm);
       }
     counts.iterations += control.last_step();
     if (last)
@@ -134,12 +132,10 @@ namespace ltn
   ModelSolver::forward(const TrilinosWrappers::MPI::Vector &theta,
                        const bool                           with_data) const
   {
-    TrilinosWrappers::MPI::Vector rhs = model.new_vector();
+    // The control rows of `r` are zero.
+    TrilinosWrappers::MPI::Vector rhs = extend_controls(theta);
     if (with_data)
-      rhs = model.rhs;
-    for (std::size_t c = 0; c < control_dofs.size(); ++c)
-      rhs(control_dofs[c]) = theta(first_control + c);
-    rhs.compress(VectorOperation::insert);
+      rhs += model.rhs;
 
     TrilinosWrappers::MPI::Vector field = model.new_vector();
     solve(false, field, rhs, with_data ? nullptr : &last_forward);
@@ -167,6 +163,29 @@ namespace ltn
       restricted(first_control + c) = x(control_dofs[c]);
     restricted.compress(VectorOperation::insert);
     return restricted;
+  }
+
+
+
+  TrilinosWrappers::MPI::Vector
+  ModelSolver::extend_controls(const TrilinosWrappers::MPI::Vector &theta) const
+  {
+    TrilinosWrappers::MPI::Vector extended = model.new_vector();
+    for (std::size_t c = 0; c < control_dofs.size(); ++c)
+      extended(control_dofs[c]) = theta(first_control + c);
+    extended.compress(VectorOperation::insert);
+    return extended;
+  }
+
+
+
+  TrilinosWrappers::MPI::Vector
+  ModelSolver::solve(const bool                           transpose,
+                     const TrilinosWrappers::MPI::Vector &b) const
+  {
+    TrilinosWrappers::MPI::Vector x = model.new_vector();
+    solve(transpose, x, b, &last_general[transpose ? 1 : 0]);
+    return x;
   }
 
 

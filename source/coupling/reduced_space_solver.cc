@@ -5,9 +5,9 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
-#include <ltn/base/input_error.h>
 #include <ltn/coupling/control_preconditioner.h>
 #include <ltn/coupling/model_solver.h>
+#include <ltn/coupling/no_convergence.h>
 #include <ltn/coupling/reduced_hessian.h>
 #include <ltn/coupling/reduced_space_solver.h>
 
@@ -62,13 +62,11 @@ namespace ltn
           }
         catch (const SolverControl::NoConvergence &)
           {
-            throw std::runtime_error(
-              "the reduced-space CG did not reduce the residual by "
-              "Coupling/Relative tolerance = " +
-              to_string(relative_tolerance) +
-              " within Coupling/Maximum iterations = " +
-              std::to_string(max_iterations) + " (relative residual " +
-              to_string(control.last_value() / rhs_norm) + ")");
+            throw no_convergence("the reduced-space CG",
+                                 "Coupling/Relative tolerance",
+                                 relative_tolerance,
+                                 max_iterations,
+                                 control.last_value() / rhs_norm);
           }
         solution.iterations = control.last_step();
         solution.residual   = control.last_value() / rhs_norm;

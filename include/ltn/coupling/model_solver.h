@@ -8,6 +8,7 @@
 #include <ltn/coupling/direct_solver.h>
 #include <ltn/coupling/model_preconditioner.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -90,6 +91,18 @@ namespace ltn
     TrilinosWrappers::MPI::Vector
     restrict_to_controls(const TrilinosWrappers::MPI::Vector &x) const;
 
+    /** `S theta`: the controls @p theta at their degrees of freedom. */
+    TrilinosWrappers::MPI::Vector
+    extend_controls(const TrilinosWrappers::MPI::Vector &theta) const;
+
+    /**
+     * `M^{-1} b` (@p transpose: `M^{-T} b`) for any right-hand side @p b,
+     * warm-started like forward() and adjoint() but from its own last solve
+     * of each kind.
+     */
+    TrilinosWrappers::MPI::Vector
+    solve(const bool transpose, const TrilinosWrappers::MPI::Vector &b) const;
+
     /** The solves so far and their iterations, summed over both kinds. */
     ModelSolverStatistics
     statistics() const;
@@ -122,6 +135,7 @@ namespace ltn
     std::unique_ptr<ModelPreconditioner> forward_preconditioner;
     std::unique_ptr<ModelPreconditioner> adjoint_preconditioner;
     mutable WarmStart                    last_forward, last_adjoint;
+    mutable std::array<WarmStart, 2>     last_general;
     mutable ModelSolverStatistics        counts;
   };
 } // namespace ltn

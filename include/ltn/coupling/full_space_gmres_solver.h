@@ -1,0 +1,23 @@
+#pragma once
+
+#include <ltn/coupling/coupling_system.h>
+
+namespace ltn
+{
+  /**
+   * Solve the full-space optimality system of solve_full_space_direct()
+   * without assembling it: flexible GMRES on the KktOperator, right
+   * preconditioned by the KktPreconditioner (doc/discretization.md,
+   * section 18), whose model solves are as @p model_solvers say (for
+   * iterative ones, GMRES to `model_solvers.relative_tolerance`) and whose
+   * reduced Hessian is approximated by the ControlPreconditioner (its local
+   * block built with tight local solves). The iteration stops when the
+   * residual has dropped by @p relative_tolerance.
+   */
+  template <int dim>
+  CouplingSolution
+  solve_full_space_gmres(const CouplingSystem<dim> &system,
+                         const double               relative_tolerance,
+                         const unsigned int         max_iterations,
+                         const ModelSolverSettings &model_solvers);
+} // namespace ltn

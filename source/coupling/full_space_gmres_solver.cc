@@ -1,0 +1,90 @@
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+
+#include <ltn/coupling/full_space_gmres_solver.h>
+#include <ltn/coupling/kkt_preconditioner.h>
+#include <ltn/coupling/no_convergence.h>
+
+namespace ltn
+{
+  template <int dim>
+  CouplingSolution
+  solve_full_space_gmres(const CouplingSystem<dim> &system,
+                         const double               relative_tolerance,
+                         const unsigned int         max_iterations,
+                         const ModelSolverSettings &model_solvers)
+  {
+    const ModelSolver nonlocal_solver(*system.models[nonlocal_model],
+                                      true,
+                                      model_solvers);
+    const ModelSolver local_solver(*system.models[local_model],
+                                   true,
+                                   model_solvers);
+    // The local block of the control preconditioner is formed column by
+    // column and must be the Hessian's, whatever the inner tolerance.
+    ModelSolverSettings tight = model_solvers;
+    tight.relative_tolerance  = std::min(tight.relative_tolerance, 1e-12);
+    const ModelSolver setup_solver(*system.models[local_model], true, tight);
+
+    CouplingSolution                 solution;
+    Timer                            setup_timer;
+    const ControlPreconditioner<dim> controls(
+      ReducedHessian<dim>(system, {{&nonlocal_solver, &setup_solver}}));
+    solution.preconditioner_setup_seconds = setup_timer.wall_time();
+    solution.explicit_controls            = controls.n_explicit_controls();
+
+    const KktOperator<dim>       kkt(system);
+    const KktPreconditioner<dim> preconditioner(
+      kkt, {{&nonlocal_solver, &local_solver}}, controls);
+    const auto   b      = kkt.rhs();
+    auto         x      = kkt.new_vector();
+    const double b_norm = b.l2_norm();
+    if (b_norm > 0)
+      {
+        SolverControl control(max_iterations, relative_tolerance * b_norm);
+        // FGMRES keeps the preconditioned vectors: the preconditioner's
+        // inner GMRES makes it change from one application to the next.
+        SolverFGMRES<TrilinosWrappers::MPI::BlockVector> fgmres(
+          control,
+          SolverFGMRES<TrilinosWrappers::MPI::BlockVector>::AdditionalData(
+            100));
+        try
+          {
+            fgmres.solve(kkt, x, b, preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &)
+          {
+            throw no_convergence("the full-space GMRES",
+                                 "Coupling/Relative tolerance",
+                                 relative_tolerance,
+                                 max_iterations,
+                                 control.last_value() / b_norm);
+          }
+        solution.iterations = control.last_step();
+        solution.residual   = control.last_value() / b_norm;
+      }
+    for (const unsigned int k : {0u, 1u})
+      solution.fields[k] = x.block(k);
+    solution.model_solvers = {
+      {nonlocal_solver.statistics(), local_solver.statistics()}};
+    return solution;
+  }
+
+  template CouplingSolution
+  solve_full_space_gmres(const CouplingSystem<1> &,
+                         double,
+                         unsigned int,
+                         const ModelSolverSettings &);
+  template CouplingSolution
+  solve_full_space_gmres(const CouplingSystem<2> &,
+                         double,
+                         unsigned int,
+                         const ModelSolverSettings &);
+  template CouplingSolution
+  solve_full_space_gmres(const CouplingSystem<3> &,
+                         double,
+                         unsigned int,
+                         const ModelSolverSettings &);
+} // namespace ltn
