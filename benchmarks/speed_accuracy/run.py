@@ -1,7 +1,7 @@
 """Error near the crack against wall time: coupled solves and all-peridynamic.
 
 usage: run.py [--ltn build/ltn] [--out DIR] [--scenes plate_2d bar_3d]
-              [--csv FILE] [--png FILE]
+              [--csv FILE] [--png FILE] [--reuse]
 
 For each scene, runs a sequence of resolutions (the particle spacing halves,
 the horizon stays two spacings) with every solver of the coupled problem and
@@ -28,6 +28,8 @@ parser.add_argument("--out", default=os.path.join(here, "runs"))
 parser.add_argument("--scenes", nargs="+", default=["plate_2d", "bar_3d"])
 parser.add_argument("--csv", default=os.path.join(here, "results.csv"))
 parser.add_argument("--png", default=os.path.join(here, "error_vs_time.png"))
+parser.add_argument("--reuse", action="store_true",
+                    help="keep the runs whose summary.json exists (resume)")
 options = parser.parse_args()
 
 all_peridynamic = ["Geometry/Models=nonlocal only"]
@@ -56,10 +58,12 @@ scenes = {
                 (["Coupling/Method=full space direct"], [0]),
             "coupled, reduced space cg, direct":
                 (["Coupling/Method=reduced space cg"] + direct, [0, 1, 2]),
+            # Level 1 takes 5 minutes, level 2 would take about half an hour.
             "coupled, reduced space cg, gmres matrix-free":
-                (["Coupling/Method=reduced space cg"] + scalable, [0, 1, 2]),
+                (["Coupling/Method=reduced space cg"] + scalable, [0, 1]),
+            # Level 1 failed (exit status 1 after 7 minutes, 2026-11-22).
             "coupled, full space gmres, matrix-free":
-                (full_space_gmres, [0, 1, 2]),
+                (full_space_gmres, [0]),
         },
     },
     "bar_3d": {
@@ -85,12 +89,15 @@ def run(scene, name, level, sets):
     out = os.path.join(options.out, scene,
                        name.replace(", ", "_").replace(" ", "_"),
                        "level_%d" % level)
+    summary = os.path.join(out, "summary.json")
+    if options.reuse and os.path.exists(summary):
+        return json.load(open(summary))
     command = [options.ltn, scenes[scene]["prm"], "--output-dir", out,
                "--set", "Output/Write VTU=false"]
     for s in scenes[scene]["levels"][level] + sets:
         command += ["--set", s]
     subprocess.run(command, check=True, capture_output=True)
-    return json.load(open(os.path.join(out, "summary.json")))
+    return json.load(open(summary))
 
 
 def extrapolate(values):
