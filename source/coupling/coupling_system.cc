@@ -89,6 +89,20 @@ namespace ltn
 
 
   template <int dim>
+  void
+  CouplingSystem<dim>::observe(const VectorType &u_nonlocal,
+                               const VectorType &u_local,
+                               VectorType       &gradient_nonlocal,
+                               VectorType       &gradient_local) const
+  {
+    mismatch_gradient(mismatch(u_nonlocal, u_local),
+                      gradient_nonlocal,
+                      gradient_local);
+  }
+
+
+
+  template <int dim>
   typename CouplingSystem<dim>::VectorType
   CouplingSystem<dim>::observation_diagonal(const unsigned int k) const
   {

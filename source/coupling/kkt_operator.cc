@@ -61,20 +61,6 @@ namespace ltn
 
   template <int dim>
   void
-  KktOperator<dim>::observe(const TrilinosWrappers::MPI::Vector &x_nonlocal,
-                            const TrilinosWrappers::MPI::Vector &x_local,
-                            TrilinosWrappers::MPI::Vector       &nonlocal,
-                            TrilinosWrappers::MPI::Vector       &local) const
-  {
-    system.mismatch_gradient(system.mismatch(x_nonlocal, x_local),
-                             nonlocal,
-                             local);
-  }
-
-
-
-  template <int dim>
-  void
   KktOperator<dim>::zero_controls(const unsigned int             k,
                                   TrilinosWrappers::MPI::Vector &x) const
   {
@@ -90,7 +76,7 @@ namespace ltn
   KktOperator<dim>::vmult(BlockVectorType       &dst,
                           const BlockVectorType &src) const
   {
-    observe(src.block(0), src.block(1), dst.block(0), dst.block(1));
+    system.observe(src.block(0), src.block(1), dst.block(0), dst.block(1));
     for (const unsigned int k : {0u, 1u})
       {
         const DiscreteModel                 &model = *system.models[k];

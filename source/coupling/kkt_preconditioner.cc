@@ -32,7 +32,7 @@ namespace ltn
       }
 
     // The reduced gradient of the residual, and the controls from it.
-    kkt.observe(x[0], x[1], observed[0], observed[1]);
+    kkt.system.observe(x[0], x[1], observed[0], observed[1]);
     BlockVectorType reduced(2), theta(2);
     for (const unsigned int k : {0u, 1u})
       {
@@ -53,7 +53,7 @@ namespace ltn
         rhs += zg[k];
         x[k] = solvers[k]->solve(false, rhs);
       }
-    kkt.observe(x[0], x[1], observed[0], observed[1]);
+    kkt.system.observe(x[0], x[1], observed[0], observed[1]);
     for (const unsigned int k : {0u, 1u})
       {
         VectorType y = src.block(k);

@@ -73,7 +73,7 @@ namespace ltn
     u[k]     = solvers[k]->forward(theta_k, false);
     u[1 - k] = system.models[1 - k]->new_vector();
     std::array<TrilinosWrappers::MPI::Vector, 2> z;
-    system.mismatch_gradient(system.mismatch(u[0], u[1]), z[0], z[1]);
+    system.observe(u[0], u[1], z[0], z[1]);
     TrilinosWrappers::MPI::Vector result = solvers[k]->adjoint(z[k]);
     result.add(system.alpha, theta_k);
     return result;

@@ -45,15 +45,15 @@ namespace ltn
         const LatticeIndex index = lattice.index(n);
         if (!near_crack(lattice.position(index)))
           continue;
+        // A bond is not intact when it is cut or reaches no particle.
         intact_bonds(index, intact);
-        for (std::size_t k = 0; k < intact.size(); ++k)
+        for (std::size_t k = 0; k < intact.size() && !has_cut_bond[n]; ++k)
           {
             LatticeIndex neighbour = index;
             for (unsigned int d = 0; d < dim; ++d)
               neighbour[d] += stencil.offsets()[k][d];
-            has_cut_bond[n] = has_cut_bond[n] ||
-                              (!intact[k] && lattice.number(neighbour) !=
-                                               ParticleLattice<dim>::invalid);
+            has_cut_bond[n] = !intact[k] && lattice.number(neighbour) !=
+                                              ParticleLattice<dim>::invalid;
           }
       }
 
@@ -243,9 +243,9 @@ namespace ltn
               }
           if (!free_u)
             continue;
-          // Neighbours of a particle of Omega_n are complete: away from
-          // cracks their weighted volume is the stencil's.
-          const double m_j = near_crack(lattice.position(neighbour)) ?
+          // Neighbours of a particle of Omega_n are complete: without a
+          // cut bond their weighted volume is the stencil's.
+          const double m_j = has_cut_bond[j] ?
                                intact_bonds(neighbour, neighbour_intact) :
                                stencil.weighted_volume();
           const double bond_stiffness =

@@ -64,6 +64,17 @@ namespace ltn
                       VectorType                &gradient_local) const;
 
     /**
+     * `B^T W B x` for the fields @p u_nonlocal and @p u_local: the gradient
+     * of the mismatch term at them, into @p gradient_nonlocal and
+     * @p gradient_local.
+     */
+    void
+    observe(const VectorType &u_nonlocal,
+            const VectorType &u_local,
+            VectorType       &gradient_nonlocal,
+            VectorType       &gradient_local) const;
+
+    /**
      * The diagonal of `B_k^T W B_k` over the degrees of freedom of model
      * @p k (`B_k` is `E` or `-P`): how strongly the mismatch observes each
      * degree of freedom directly, `sum_q w_q (B_k)_qi^2`.

@@ -44,16 +44,6 @@ namespace ltn
     void
     vmult(BlockVectorType &dst, const BlockVectorType &src) const;
 
-    /**
-     * `B^T W B x` of the fields @p x_nonlocal and @p x_local, into
-     * @p nonlocal and @p local.
-     */
-    void
-    observe(const TrilinosWrappers::MPI::Vector &x_nonlocal,
-            const TrilinosWrappers::MPI::Vector &x_local,
-            TrilinosWrappers::MPI::Vector       &nonlocal,
-            TrilinosWrappers::MPI::Vector       &local) const;
-
     /** `Z x` for a vector @p x of model @p k: zero at its controls. */
     void
     zero_controls(const unsigned int k, TrilinosWrappers::MPI::Vector &x) const;
