@@ -42,14 +42,27 @@ namespace ltn
                         "Iteration limit of the reduced-space CG, the "
                         "full-space GMRES and each model solve.");
       prm.declare_entry("Control preconditioner",
-                        "block diagonal",
-                        Patterns::Selection("block diagonal|none"),
-                        "Preconditioner of the reduced-space CG: `block "
-                        "diagonal` (the exact Hessian block of the local "
-                        "controls, built with one forward and one adjoint "
-                        "local solve per local control, and the observation "
-                        "weights of the nonlocal controls; keeps the "
-                        "iterations nearly independent of h) or `none`.");
+                        "two level",
+                        Patterns::Selection("two level|block diagonal|none"),
+                        "Preconditioner of the reduced Hessian, in the "
+                        "reduced-space CG and inside the full-space GMRES's "
+                        "preconditioner: `block diagonal` (the exact Hessian "
+                        "block of the local controls, built with one forward "
+                        "and one adjoint local solve per local control, and "
+                        "the observation weights of the nonlocal controls; "
+                        "keeps the iterations nearly independent of h), `two "
+                        "level` (the same, balanced by a coarse level of "
+                        "polynomial control fields: one Hessian product per "
+                        "coarse mode, once; it removes the slow modes the two "
+                        "models share across the overlap) or `none` "
+                        "(reduced-space CG only).");
+      prm.declare_entry("Coarse space degree",
+                        "1",
+                        Patterns::Integer(0, 4),
+                        "Total degree of the polynomials, per model and per "
+                        "field component, spanning the coarse level of the "
+                        "`two level` control preconditioner (3D elasticity: "
+                        "24 modes at degree 1, 60 at degree 2).");
       prm.declare_entry("Model solvers",
                         "direct",
                         Patterns::Selection("direct|preconditioned gmres"),
@@ -64,9 +77,12 @@ namespace ltn
                         "1e-13",
                         Patterns::Double(0),
                         "Residual reduction, relative to the right-hand "
-                        "side, at which a model's GMRES stops. Keep it below "
-                        "the Relative tolerance of the outer CG; inside the "
-                        "full-space GMRES's preconditioner it may be loose.");
+                        "side, at which a model's GMRES stops. Inside the "
+                        "reduced-space CG this is the tolerance of its first "
+                        "iteration, relaxed as the CG's residual falls "
+                        "(at most to 1e-1): keep it about 1e-2 times the "
+                        "Relative tolerance. Inside the full-space GMRES's "
+                        "preconditioner it may be loose (1e-1 to 1e-3).");
     }
     prm.leave_subsection();
   }
@@ -82,8 +98,20 @@ namespace ltn
       tikhonov_parameter = prm.get_double("Tikhonov parameter");
       relative_tolerance = prm.get_double("Relative tolerance");
       max_iterations     = prm.get_integer("Maximum iterations");
-      precondition_controls =
-        prm.get("Control preconditioner") == "block diagonal";
+      const std::string control_preconditioner =
+        prm.get("Control preconditioner");
+      controls.enabled = control_preconditioner != "none";
+      controls.coarse_degree =
+        control_preconditioner == "two level" ?
+          std::optional<unsigned int>(prm.get_integer("Coarse space degree")) :
+          std::nullopt;
+      check_input(control_preconditioner != "none" ||
+                    method != "full space gmres",
+                  "Coupling/Control preconditioner",
+                  control_preconditioner,
+                  "`two level` or `block diagonal` with Coupling/Method = "
+                  "full space gmres (its preconditioner eliminates the "
+                  "controls with it)");
       model_solvers.iterative =
         prm.get("Model solvers") == "preconditioned gmres";
       model_solvers.relative_tolerance =
@@ -130,16 +158,14 @@ namespace ltn
   CouplingParameters::solve(const CouplingSystem<dim> &system) const
   {
     if (method == "reduced space cg")
-      return solve_reduced_space_cg(system,
-                                    relative_tolerance,
-                                    max_iterations,
-                                    model_solvers,
-                                    precondition_controls);
+      return solve_reduced_space_cg(
+        system, relative_tolerance, max_iterations, model_solvers, controls);
     if (method == "full space gmres")
       return solve_full_space_gmres(system,
                                     relative_tolerance,
                                     max_iterations,
-                                    model_solvers);
+                                    model_solvers,
+                                    controls.coarse_degree);
     return solve_full_space_direct(system);
   }
 

@@ -11,10 +11,11 @@ namespace ltn
 {
   template <int dim>
   CouplingSolution
-  solve_full_space_gmres(const CouplingSystem<dim> &system,
-                         const double               relative_tolerance,
-                         const unsigned int         max_iterations,
-                         const ModelSolverSettings &model_solvers)
+  solve_full_space_gmres(const CouplingSystem<dim>        &system,
+                         const double                      relative_tolerance,
+                         const unsigned int                max_iterations,
+                         const ModelSolverSettings        &model_solvers,
+                         const std::optional<unsigned int> coarse_degree)
   {
     const ModelSolver nonlocal_solver(*system.models[nonlocal_model],
                                       true,
@@ -31,9 +32,11 @@ namespace ltn
     CouplingSolution                 solution;
     Timer                            setup_timer;
     const ControlPreconditioner<dim> controls(
-      ReducedHessian<dim>(system, {{&nonlocal_solver, &setup_solver}}));
+      ReducedHessian<dim>(system, {{&nonlocal_solver, &setup_solver}}),
+      coarse_degree);
     solution.preconditioner_setup_seconds = setup_timer.wall_time();
     solution.explicit_controls            = controls.n_explicit_controls();
+    solution.coarse_modes                 = controls.n_coarse_modes();
 
     const KktOperator<dim>       kkt(system);
     const KktPreconditioner<dim> preconditioner(
@@ -76,15 +79,18 @@ namespace ltn
   solve_full_space_gmres(const CouplingSystem<1> &,
                          double,
                          unsigned int,
-                         const ModelSolverSettings &);
+                         const ModelSolverSettings &,
+                         std::optional<unsigned int>);
   template CouplingSolution
   solve_full_space_gmres(const CouplingSystem<2> &,
                          double,
                          unsigned int,
-                         const ModelSolverSettings &);
+                         const ModelSolverSettings &,
+                         std::optional<unsigned int>);
   template CouplingSolution
   solve_full_space_gmres(const CouplingSystem<3> &,
                          double,
                          unsigned int,
-                         const ModelSolverSettings &);
+                         const ModelSolverSettings &,
+                         std::optional<unsigned int>);
 } // namespace ltn

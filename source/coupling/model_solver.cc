@@ -34,6 +34,7 @@ namespace ltn
                            const ModelSolverSettings &settings)
     : model(model)
     , settings(settings)
+    , tolerance(settings.relative_tolerance)
     , control_dofs(model.controls.begin(), model.controls.end())
   {
     control_partition =
@@ -96,8 +97,7 @@ namespace ltn
         if (last_norm > 0)
           x.add((b * last->rhs) / (last_norm * last_norm), last->solution);
       }
-    SolverControl control(settings.max_iterations,
-                          settings.relative_tolerance * b_norm);
+    SolverControl control(settings.max_iterations, tolerance * b_norm);
     // Right preconditioning: the tolerance is on the true residual.
     SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
       control,
@@ -114,7 +114,7 @@ namespace ltn
       {
         throw no_convergence("a model's GMRES",
                              "Coupling/Model solver tolerance",
-                             settings.relative_tolerance,
+                             tolerance,
                              settings.max_iterations,
                              control.last_value() / b_norm);
       }
@@ -186,6 +186,22 @@ namespace ltn
     TrilinosWrappers::MPI::Vector x = model.new_vector();
     solve(transpose, x, b, &last_general[transpose ? 1 : 0]);
     return x;
+  }
+
+
+
+  void
+  ModelSolver::set_relative_tolerance(const double relative_tolerance) const
+  {
+    tolerance = relative_tolerance;
+  }
+
+
+
+  double
+  ModelSolver::relative_tolerance() const
+  {
+    return tolerance;
   }
 
 

@@ -11,11 +11,17 @@
 #include <ltn/coupling/reduced_hessian.h>
 #include <ltn/coupling/reduced_space_solver.h>
 
+#include <algorithm>
+#include <limits>
+
 namespace ltn
 {
   namespace
   {
     using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
+
+    /** The loosest tolerance a relaxed inner solve is given. */
+    constexpr double loosest_model_tolerance = 1e-1;
   } // namespace
 
 
@@ -26,7 +32,7 @@ namespace ltn
                          const double               relative_tolerance,
                          const unsigned int         max_iterations,
                          const ModelSolverSettings &model_solvers,
-                         const bool                 precondition)
+                         const ControlPreconditionerSettings &controls)
   {
     ModelSolver nonlocal_solver(*system.models[nonlocal_model],
                                 true,
@@ -46,15 +52,33 @@ namespace ltn
       {
         ReductionControl control(max_iterations, 0., relative_tolerance);
         SolverCG<BlockVectorType> cg(control);
+        // Relaxed inner solves (doc/discretization.md, section 19): the
+        // error of the Hessian's products may grow as the residual falls.
+        cg.connect([&](const unsigned int,
+                       const double residual,
+                       const BlockVectorType &) {
+          const double relaxed =
+            model_solvers.relative_tolerance * rhs_norm /
+            std::max(residual, std::numeric_limits<double>::min());
+          for (const ModelSolver *solver : hessian.solvers)
+            solver->set_relative_tolerance(
+              std::clamp(relaxed,
+                         model_solvers.relative_tolerance,
+                         std::max(loosest_model_tolerance,
+                                  model_solvers.relative_tolerance)));
+          return SolverControl::success;
+        });
         try
           {
-            if (precondition)
+            if (controls.enabled)
               {
                 Timer                            setup_timer;
-                const ControlPreconditioner<dim> preconditioner(hessian);
+                const ControlPreconditioner<dim> preconditioner(
+                  hessian, controls.coarse_degree);
                 solution.preconditioner_setup_seconds = setup_timer.wall_time();
                 solution.explicit_controls =
                   preconditioner.n_explicit_controls();
+                solution.coarse_modes = preconditioner.n_coarse_modes();
                 cg.solve(hessian, theta, rhs, preconditioner);
               }
             else
@@ -68,6 +92,8 @@ namespace ltn
                                  max_iterations,
                                  control.last_value() / rhs_norm);
           }
+        for (const ModelSolver *solver : hessian.solvers)
+          solver->set_relative_tolerance(model_solvers.relative_tolerance);
         solution.iterations = control.last_step();
         solution.residual   = control.last_value() / rhs_norm;
       }
@@ -84,17 +110,17 @@ namespace ltn
                          double,
                          unsigned int,
                          const ModelSolverSettings &,
-                         bool);
+                         const ControlPreconditionerSettings &);
   template CouplingSolution
   solve_reduced_space_cg(const CouplingSystem<2> &,
                          double,
                          unsigned int,
                          const ModelSolverSettings &,
-                         bool);
+                         const ControlPreconditionerSettings &);
   template CouplingSolution
   solve_reduced_space_cg(const CouplingSystem<3> &,
                          double,
                          unsigned int,
                          const ModelSolverSettings &,
-                         bool);
+                         const ControlPreconditionerSettings &);
 } // namespace ltn

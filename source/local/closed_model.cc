@@ -1,5 +1,7 @@
 #include <deal.II/dofs/dof_tools.h>
 
+#include <deal.II/fe/mapping_q1.h>
+
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
@@ -86,6 +88,27 @@ namespace ltn
     hanging.compress();
     model.controls.subtract_set(hanging);
     model.controls.subtract_set(model.fixed);
+
+    std::map<types::global_dof_index, Point<dim>> support_points;
+    DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
+                                         dof_handler,
+                                         support_points);
+    const unsigned int    n_components = dof_handler.get_fe().n_components();
+    std::vector<IndexSet> of_component;
+    for (unsigned int c = 0; c < n_components; ++c)
+      {
+        ComponentMask mask(n_components, false);
+        mask.set(c, true);
+        of_component.push_back(DoFTools::extract_dofs(dof_handler, mask));
+      }
+    model.locate_controls<dim>(
+      [&](const types::global_dof_index i) { return support_points.at(i); },
+      [&](const types::global_dof_index i) {
+        unsigned int c = 0;
+        while (!of_component[c].is_element(i))
+          ++c;
+        return c;
+      });
 
     std::vector<types::global_dof_index> identity_rows;
     for (const IndexSet *rows : {&model.fixed, &model.controls, &hanging})

@@ -102,6 +102,9 @@ namespace ltn
            model.fixed :
            model.controls)
           .add_index(i);
+    model.locate_controls<1>(
+      [&](const types::global_dof_index i) { return support_points[i]; },
+      [](const types::global_dof_index) { return 0u; });
   }
 
 

@@ -32,6 +32,11 @@ namespace ltn
       }
     model.controls.compress();
     model.fixed.compress();
+    model.locate_controls<dim>(
+      [&](const types::global_dof_index i) {
+        return lattice.position(lattice.index(i));
+      },
+      [](const types::global_dof_index) { return 0u; });
   }
 
 

@@ -83,6 +83,13 @@ namespace ltn
       }
     model.controls.compress();
     model.fixed.compress();
+    model.locate_controls<dim>(
+      [&](const types::global_dof_index i) {
+        return lattice.position(lattice.index(i / n_components));
+      },
+      [](const types::global_dof_index i) {
+        return static_cast<unsigned int>(i % n_components);
+      });
   }
 
 

@@ -56,6 +56,7 @@ namespace ltn
         {
           JsonValue &preconditioner = j["solver"]["control preconditioner"];
           preconditioner["explicit controls"] = level.explicit_controls;
+          preconditioner["coarse modes"]      = level.coarse_modes;
           preconditioner["setup seconds"] = level.preconditioner_setup_seconds;
         }
       const char *names[2] = {"nonlocal", "local"};

@@ -2,10 +2,12 @@
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/point.h>
 
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -81,6 +83,14 @@ namespace ltn
     /** The owned control and fixed degrees of freedom. */
     IndexSet controls;
     IndexSet fixed;
+    /**
+     * Per owned control, in the order of `controls`: where it sits (unused
+     * coordinates 0) and which component of the field it holds. The coarse
+     * space of the reduced Hessian's preconditioner evaluates smooth fields
+     * there.
+     */
+    std::vector<std::array<double, 3>> control_positions;
+    std::vector<unsigned int>          control_components;
 
     /**
      * @name What an iterative solver of the model needs besides `M`.
@@ -129,5 +139,27 @@ namespace ltn
     /** The number of control degrees of freedom on all ranks. */
     types::global_dof_index
     n_controls() const;
+
+    /**
+     * Fill `control_positions` and `control_components` from
+     * @p position_of and @p component_of, functions of an owned control.
+     */
+    template <int dim, typename PositionOf, typename ComponentOf>
+    void
+    locate_controls(const PositionOf  &position_of,
+                    const ComponentOf &component_of)
+    {
+      control_positions.clear();
+      control_components.clear();
+      for (const auto i : controls)
+        {
+          const Point<dim>      x = position_of(i);
+          std::array<double, 3> p = {{0., 0., 0.}};
+          for (unsigned int d = 0; d < dim; ++d)
+            p[d] = x[d];
+          control_positions.push_back(p);
+          control_components.push_back(component_of(i));
+        }
+    }
   };
 } // namespace ltn

@@ -3,11 +3,24 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <ltn/coupling/control_coarse_space.h>
 #include <ltn/coupling/reduced_hessian.h>
+
+#include <memory>
+#include <optional>
 
 namespace ltn
 {
   using namespace dealii;
+
+  /** How the reduced Hessian is preconditioned (`Control preconditioner`). */
+  struct ControlPreconditionerSettings
+  {
+    /** Precondition at all; without, the reduced-space CG runs plain. */
+    bool enabled = true;
+    /** The coarse level's polynomial degree; none: one level only. */
+    std::optional<unsigned int> coarse_degree = 1u;
+  };
 
   /**
    * A block-diagonal preconditioner for the reduced Hessian
@@ -34,7 +47,12 @@ namespace ltn
   public:
     using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
 
-    explicit ControlPreconditioner(const ReducedHessian<dim> &hessian);
+    /**
+     * With @p coarse_degree, a second level: the ControlCoarseSpace of
+     * polynomials up to that degree, and `P` inside its balancing.
+     */
+    ControlPreconditioner(const ReducedHessian<dim>        &hessian,
+                          const std::optional<unsigned int> coarse_degree);
 
     void
     vmult(BlockVectorType &dst, const BlockVectorType &src) const;
@@ -43,10 +61,20 @@ namespace ltn
     unsigned int
     n_explicit_controls() const;
 
+    /** The number of coarse modes; 0 without a second level. */
+    unsigned int
+    n_coarse_modes() const;
+
   private:
+    /** `P^{-1} src`, the block-diagonal level. */
+    void
+    apply_block_diagonal(BlockVectorType       &dst,
+                         const BlockVectorType &src) const;
+
     /** `D_n + alpha I` over this rank's nonlocal controls. */
     TrilinosWrappers::MPI::Vector nonlocal_diagonal;
     /** The Cholesky factor of `H_ll`. */
-    LAPACKFullMatrix<double> local_block;
+    LAPACKFullMatrix<double>                  local_block;
+    std::unique_ptr<const ControlCoarseSpace> coarse;
   };
 } // namespace ltn

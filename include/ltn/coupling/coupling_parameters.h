@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <ltn/coupling/control_preconditioner.h>
 #include <ltn/coupling/coupling_system.h>
 #include <ltn/coupling/model_solver.h>
 
@@ -41,7 +42,7 @@ namespace ltn
     double              tikhonov_parameter = 0;
     double              relative_tolerance = 1e-12;
     unsigned int        max_iterations     = 1000;
-    /** Precondition the reduced-space CG (ControlPreconditioner). */
-    bool precondition_controls = true;
+    /** The preconditioner of the reduced Hessian (ControlPreconditioner). */
+    ControlPreconditionerSettings controls;
   };
 } // namespace ltn

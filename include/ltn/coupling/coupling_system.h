@@ -123,6 +123,8 @@ namespace ltn
      * reduced-space CG holds explicitly (ControlPreconditioner); 0 without.
      */
     unsigned int explicit_controls = 0;
+    /** The coarse modes of its second level (ControlCoarseSpace); 0 without. */
+    unsigned int coarse_modes = 0;
     /** Wall time to build that preconditioner. */
     double preconditioner_setup_seconds = 0;
     /** Per model: its own solver's solves, iterations and memory. */

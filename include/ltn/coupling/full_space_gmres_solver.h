@@ -2,6 +2,8 @@
 
 #include <ltn/coupling/coupling_system.h>
 
+#include <optional>
+
 namespace ltn
 {
   /**
@@ -11,13 +13,14 @@ namespace ltn
    * section 18), whose model solves are as @p model_solvers say (for
    * iterative ones, GMRES to `model_solvers.relative_tolerance`) and whose
    * reduced Hessian is approximated by the ControlPreconditioner (its local
-   * block built with tight local solves). The iteration stops when the
+   * block built with tight local solves; with @p coarse_degree, two-level). The iteration stops when the
    * residual has dropped by @p relative_tolerance.
    */
   template <int dim>
   CouplingSolution
-  solve_full_space_gmres(const CouplingSystem<dim> &system,
-                         const double               relative_tolerance,
-                         const unsigned int         max_iterations,
-                         const ModelSolverSettings &model_solvers);
+  solve_full_space_gmres(const CouplingSystem<dim>        &system,
+                         const double                      relative_tolerance,
+                         const unsigned int                max_iterations,
+                         const ModelSolverSettings        &model_solvers,
+                         const std::optional<unsigned int> coarse_degree);
 } // namespace ltn

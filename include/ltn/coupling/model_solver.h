@@ -103,6 +103,18 @@ namespace ltn
     TrilinosWrappers::MPI::Vector
     solve(const bool transpose, const TrilinosWrappers::MPI::Vector &b) const;
 
+    /**
+     * Solve the following systems of the iterative solver to a residual
+     * reduction of @p relative_tolerance instead of the settings' one: an
+     * outer Krylov method relaxes its inner solves as it converges.
+     */
+    void
+    set_relative_tolerance(const double relative_tolerance) const;
+
+    /** The residual reduction of the next iterative solves. */
+    double
+    relative_tolerance() const;
+
     /** The solves so far and their iterations, summed over both kinds. */
     ModelSolverStatistics
     statistics() const;
@@ -125,8 +137,10 @@ namespace ltn
           const TrilinosWrappers::MPI::Vector &b,
           WarmStart                           *last) const;
 
-    const DiscreteModel                 &model;
-    const ModelSolverSettings            settings;
+    const DiscreteModel      &model;
+    const ModelSolverSettings settings;
+    /** The residual reduction of the next iterative solves. */
+    mutable double                       tolerance;
     std::vector<types::global_dof_index> control_dofs;
     /** The number of this rank's first control. */
     types::global_dof_index              first_control;

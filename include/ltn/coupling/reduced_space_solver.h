@@ -1,5 +1,6 @@
 #pragma once
 
+#include <ltn/coupling/control_preconditioner.h>
 #include <ltn/coupling/coupling_system.h>
 
 namespace ltn
@@ -15,8 +16,9 @@ namespace ltn
    * `d_0` the mismatch of the states with zero controls. Each CG iteration
    * costs one forward and one adjoint solve per model. The iteration stops
    * when the residual has dropped by @p relative_tolerance. The models'
-   * solvers are as @p model_solvers say. With @p precondition, CG is
-   * preconditioned by ControlPreconditioner.
+   * solvers are as @p model_solvers say, their tolerance relaxed as the
+   * residual falls (doc/discretization.md, section 19). CG is preconditioned
+   * by the ControlPreconditioner that @p controls describes.
    */
   template <int dim>
   CouplingSolution
@@ -24,5 +26,5 @@ namespace ltn
                          const double               relative_tolerance,
                          const unsigned int         max_iterations,
                          const ModelSolverSettings &model_solvers,
-                         const bool                 precondition);
+                         const ControlPreconditionerSettings &controls);
 } // namespace ltn

@@ -27,8 +27,12 @@ namespace ltn
     std::string             solver_method;
     unsigned int            iterations = 0;
     double                  residual   = 0;
-    /** The reduced-space preconditioner's explicit controls, setup time. */
+    /**
+     * The reduced-space preconditioner's explicit controls, coarse modes,
+     * setup time.
+     */
     unsigned int explicit_controls            = 0;
+    unsigned int coarse_modes                 = 0;
     double       preconditioner_setup_seconds = 0;
     /** Per model (nonlocal, local): its own solver's solves, iterations. */
     std::array<unsigned int, 2> model_solves     = {{0, 0}};

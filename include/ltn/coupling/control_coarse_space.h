@@ -1,0 +1,70 @@
+#pragma once
+
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <ltn/coupling/reduced_hessian.h>
+
+#include <functional>
+#include <vector>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * The coarse level of the two-level preconditioner of the reduced Hessian
+   * `H` (doc/discretization.md, section 19): for orthonormal columns `Z`,
+   * `H Z` is computed once (one product per column), and `E = Z^T H Z` is
+   * factored by Cholesky and replicated on every rank. balance() applies
+   * the balancing preconditioner
+   *
+   *   Q + (I - Q H) P^{-1} (I - H Q),    Q = Z E^{-1} Z^T,
+   *
+   * which is symmetric positive definite whenever `P` is: CG stays CG. It
+   * inverts `H` exactly on the span of `Z`.
+   */
+  class ControlCoarseSpace
+  {
+  public:
+    using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
+    using Operator =
+      std::function<void(BlockVectorType &, const BlockVectorType &)>;
+
+    /** The coarse level spanned by @p Z (orthonormal) for the operator @p H. */
+    ControlCoarseSpace(std::vector<BlockVectorType> Z, const Operator &H);
+
+    /** `dst = Q src + (I - Q H) P^{-1} (I - H Q) src`, `P^{-1}` @p smooth. */
+    void
+    balance(BlockVectorType       &dst,
+            const BlockVectorType &src,
+            const Operator        &smooth) const;
+
+    /** The number of coarse modes, the columns of `Z`. */
+    unsigned int
+    size() const;
+
+  private:
+    /** `E^{-1} Y^T v` for the columns @p Y (`Z` or `H Z`). */
+    Vector<double>
+    coarse_solve(const std::vector<BlockVectorType> &Y,
+                 const BlockVectorType              &v) const;
+
+    std::vector<BlockVectorType> Z, HZ;
+    /** The Cholesky factor of `E = Z^T H Z`. */
+    LAPACKFullMatrix<double> coarse_matrix;
+  };
+
+  /**
+   * The coarse modes of the two-level control preconditioner: per model and
+   * per component of its field, the monomials of total degree up to
+   * @p degree at its controls (coordinates centred and scaled to [-1, 1]
+   * over that model's controls), orthonormalized. The slowest modes of the
+   * block-diagonally preconditioned Hessian are such smooth fields, which
+   * both models represent and the overlap barely tells apart.
+   */
+  template <int dim>
+  std::vector<TrilinosWrappers::MPI::BlockVector>
+  polynomial_control_fields(const ReducedHessian<dim> &hessian,
+                            const unsigned int         degree);
+} // namespace ltn
