@@ -23,27 +23,29 @@ namespace ltn
     const ModelSolver local_solver(*system.models[local_model],
                                    true,
                                    model_solvers);
-    // The local block of the control preconditioner is formed column by
-    // column and must be the Hessian's, whatever the inner tolerance.
-    ModelSolverSettings tight = model_solvers;
-    tight.relative_tolerance  = std::min(tight.relative_tolerance, 1e-12);
-    const ModelSolver setup_solver(*system.models[local_model], true, tight);
-
+    const std::array<const ModelSolver *, 2> solvers = {
+      {&nonlocal_solver, &local_solver}};
+    // The control preconditioner's explicit blocks are formed from Hessian
+    // products and must be the Hessian's, whatever the inner tolerance.
+    for (const ModelSolver *solver : solvers)
+      solver->set_relative_tolerance(
+        std::min(model_solvers.relative_tolerance, 1e-12));
     CouplingSolution                 solution;
     Timer                            setup_timer;
-    const ControlPreconditioner<dim> controls(
-      ReducedHessian<dim>(system, {{&nonlocal_solver, &setup_solver}}),
-      coarse_degree);
+    const ControlPreconditioner<dim> controls(ReducedHessian<dim>(system,
+                                                                  solvers),
+                                              coarse_degree);
+    for (const ModelSolver *solver : solvers)
+      solver->set_relative_tolerance(model_solvers.relative_tolerance);
     solution.preconditioner_setup_seconds = setup_timer.wall_time();
     solution.explicit_controls            = controls.n_explicit_controls();
     solution.coarse_modes                 = controls.n_coarse_modes();
 
     const KktOperator<dim>       kkt(system);
-    const KktPreconditioner<dim> preconditioner(
-      kkt, {{&nonlocal_solver, &local_solver}}, controls);
-    const auto   b      = kkt.rhs();
-    auto         x      = kkt.new_vector();
-    const double b_norm = b.l2_norm();
+    const KktPreconditioner<dim> preconditioner(kkt, solvers, controls);
+    const auto                   b      = kkt.rhs();
+    auto                         x      = kkt.new_vector();
+    const double                 b_norm = b.l2_norm();
     if (b_norm > 0)
       {
         SolverControl control(max_iterations, relative_tolerance * b_norm);

@@ -198,14 +198,6 @@ namespace ltn
 
 
 
-  double
-  ModelSolver::relative_tolerance() const
-  {
-    return tolerance;
-  }
-
-
-
   ModelSolverStatistics
   ModelSolver::statistics() const
   {

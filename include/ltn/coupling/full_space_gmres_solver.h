@@ -13,7 +13,8 @@ namespace ltn
    * section 18), whose model solves are as @p model_solvers say (for
    * iterative ones, GMRES to `model_solvers.relative_tolerance`) and whose
    * reduced Hessian is approximated by the ControlPreconditioner (its local
-   * block built with tight local solves; with @p coarse_degree, two-level). The iteration stops when the
+   * block and coarse products built with tight solves; with
+   * @p coarse_degree, two-level). The iteration stops when the
    * residual has dropped by @p relative_tolerance.
    */
   template <int dim>

@@ -111,10 +111,6 @@ namespace ltn
     void
     set_relative_tolerance(const double relative_tolerance) const;
 
-    /** The residual reduction of the next iterative solves. */
-    double
-    relative_tolerance() const;
-
     /** The solves so far and their iterations, summed over both kinds. */
     ModelSolverStatistics
     statistics() const;
