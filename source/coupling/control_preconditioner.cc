@@ -26,28 +26,40 @@ namespace ltn
         hessian.system.alpha;
     nonlocal_diagonal.compress(VectorOperation::insert);
 
-    const ModelSolver  &local = *hessian.solvers[local_model];
-    const unsigned int  n     = local.new_control_vector().size();
-    std::vector<double> columns(static_cast<std::size_t>(n) * n);
+    // H_ll = (P V_l)^T W (P V_l) + alpha I: one forward local solve per
+    // local control, its field observed at this rank's overlap points
+    // (with the nonlocal field zero, the mismatch is -P u_l), then the
+    // weighted Gram matrix of the observations, summed over the ranks.
+    const ModelSolver &local = *hessian.solvers[local_model];
+    const unsigned int n     = local.new_control_vector().size();
+    const auto        &w     = hessian.system.overlap.weights;
+    const auto         zero_nonlocal =
+      hessian.system.models[nonlocal_model]->new_vector();
+    std::vector<std::vector<double>> observed(n);
     for (unsigned int j = 0; j < n; ++j)
       {
         TrilinosWrappers::MPI::Vector unit = local.new_control_vector();
         if (unit.in_local_range(j))
           unit(j) = 1.;
         unit.compress(VectorOperation::insert);
-        const TrilinosWrappers::MPI::Vector column =
-          hessian.block_vmult(local_model, unit);
-        for (const auto i : column.locally_owned_elements())
-          columns[static_cast<std::size_t>(j) * n + i] = column(i);
+        observed[j] =
+          hessian.system.mismatch(zero_nonlocal, local.forward(unit, false));
       }
-    Utilities::MPI::sum(columns, hessian.system.communicator(), columns);
-
-    // The inner solves are exact only to their tolerance: symmetrize.
+    std::vector<double> gram(static_cast<std::size_t>(n) * n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j <= i; ++j)
+        {
+          double sum = 0;
+          for (std::size_t q = 0; q < w.size(); ++q)
+            sum += w[q] * observed[i][q] * observed[j][q];
+          gram[std::size_t(i) * n + j] = sum;
+        }
+    Utilities::MPI::sum(gram, hessian.system.communicator(), gram);
     local_block.reinit(n, n);
     for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < n; ++j)
-        local_block(i, j) = 0.5 * (columns[std::size_t(j) * n + i] +
-                                   columns[std::size_t(i) * n + j]);
+      for (unsigned int j = 0; j <= i; ++j)
+        local_block(i, j) = local_block(j, i) =
+          gram[std::size_t(i) * n + j] + (i == j ? hessian.system.alpha : 0.);
     local_block.set_property(LAPACKSupport::symmetric);
     if (n > 0)
       local_block.compute_cholesky_factorization();

@@ -48,7 +48,7 @@ namespace ltn
                         "reduced-space CG and inside the full-space GMRES's "
                         "preconditioner: `block diagonal` (the exact Hessian "
                         "block of the local controls, built with one forward "
-                        "and one adjoint local solve per local control, and "
+                        "local solve per local control, and "
                         "the observation weights of the nonlocal controls; "
                         "keeps the iterations nearly independent of h), `two "
                         "level` (the same, balanced by a coarse level of "

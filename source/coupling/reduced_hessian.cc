@@ -62,23 +62,6 @@ namespace ltn
 
 
 
-  template <int dim>
-  TrilinosWrappers::MPI::Vector
-  ReducedHessian<dim>::block_vmult(
-    const unsigned int                   k,
-    const TrilinosWrappers::MPI::Vector &theta_k) const
-  {
-    // The other model's field is zero: B V theta has only model k's part.
-    std::array<TrilinosWrappers::MPI::Vector, 2> u;
-    u[k]     = solvers[k]->forward(theta_k, false);
-    u[1 - k] = system.models[1 - k]->new_vector();
-    std::array<TrilinosWrappers::MPI::Vector, 2> z;
-    system.observe(u[0], u[1], z[0], z[1]);
-    TrilinosWrappers::MPI::Vector result = solvers[k]->adjoint(z[k]);
-    result.add(system.alpha, theta_k);
-    return result;
-  }
-
   template class ReducedHessian<1>;
   template class ReducedHessian<2>;
   template class ReducedHessian<3>;

@@ -29,8 +29,9 @@ namespace ltn
    *   P = diag(D_n + alpha I, H_ll),
    *
    * - `H_ll`, the Hessian block of the local controls (on `Gamma_c`),
-   *   computed column by column (one forward and one adjoint solve of the
-   *   local model per local control) and factored by Cholesky, replicated
+   *   the Gram matrix of the observed local fields of the local controls (one
+   *   forward solve of the local model per local control), factored by
+   *   Cholesky, replicated
    *   on every rank. It carries the ill-conditioning: the high frequencies
    *   along `Gamma_c` are damped within a few elements of it and barely seen
    *   on the overlap, so its condition number grows like a power of `1/h`.

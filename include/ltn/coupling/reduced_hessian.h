@@ -43,15 +43,6 @@ namespace ltn
     void
     vmult(BlockVectorType &dst, const BlockVectorType &theta) const;
 
-    /**
-     * The diagonal block of model @p k applied to its controls @p theta_k:
-     * `V_k^T B_k^T W B_k V_k theta_k + alpha theta_k`, one forward and one
-     * adjoint solve of model @p k only.
-     */
-    TrilinosWrappers::MPI::Vector
-    block_vmult(const unsigned int                   k,
-                const TrilinosWrappers::MPI::Vector &theta_k) const;
-
     const CouplingSystem<dim>               &system;
     const std::array<const ModelSolver *, 2> solvers;
   };
