@@ -9,14 +9,18 @@
 
 namespace
 {
+  /** @p scene over @p n_levels levels, reduced-space CG, @p preconditioner. */
   SceneRun
-  run_with(const std::string              &scene,
-           const std::vector<std::string> &sets,
-           const std::string              &preconditioner)
+  run_with(const std::string &scene,
+           const unsigned int n_levels,
+           const std::string &preconditioner)
   {
-    std::vector<std::string> all = sets;
-    all.push_back("Coupling/Control preconditioner=" + preconditioner);
-    return run_scene(scene, all);
+    return run_scene(scene,
+                     {"Coupling/Method=reduced space cg",
+                      "Discretization/Number of levels=" +
+                        std::to_string(n_levels),
+                      "Output/Write VTU=false",
+                      "Coupling/Control preconditioner=" + preconditioner});
   }
 } // namespace
 
@@ -25,13 +29,10 @@ namespace
 TEST_CASE("reduced-space CG iterations at fixed eps/h over three halvings",
           "[solvers][scenes]")
 {
-  const std::string scene             = "diffusion_2d_asymptotic_compatibility";
-  const std::vector<std::string> sets = {"Coupling/Method=reduced space cg",
-                                         "Discretization/Number of levels=4",
-                                         "Output/Write VTU=false"};
-  const SceneRun block_diagonal       = run_with(scene, sets, "block diagonal");
-  const SceneRun two_level            = run_with(scene, sets, "two level");
-  const SceneRun unpreconditioned     = run_with(scene, sets, "none");
+  const std::string scene            = "diffusion_2d_asymptotic_compatibility";
+  const SceneRun    block_diagonal   = run_with(scene, 4, "block diagonal");
+  const SceneRun    two_level        = run_with(scene, 4, "two level");
+  const SceneRun    unpreconditioned = run_with(scene, 4, "none");
 
   const auto &levels = block_diagonal.summary.levels;
   REQUIRE(levels.size() == 4);
@@ -63,12 +64,9 @@ TEST_CASE("the two-level control preconditioner removes the slow modes the "
           "LPS models share",
           "[solvers][scenes]")
 {
-  const std::string scene             = "lps_plate_2d_asymptotic_compatibility";
-  const std::vector<std::string> sets = {"Coupling/Method=reduced space cg",
-                                         "Discretization/Number of levels=2",
-                                         "Output/Write VTU=false"};
-  const SceneRun block_diagonal       = run_with(scene, sets, "block diagonal");
-  const SceneRun two_level            = run_with(scene, sets, "two level");
+  const std::string scene          = "lps_plate_2d_asymptotic_compatibility";
+  const SceneRun    block_diagonal = run_with(scene, 2, "block diagonal");
+  const SceneRun    two_level      = run_with(scene, 2, "two level");
   for (std::size_t l = 0; l < 2; ++l)
     {
       const unsigned int with   = block_diagonal.summary.levels[l].iterations;
