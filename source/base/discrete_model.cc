@@ -54,6 +54,22 @@ namespace ltn
 
 
 
+  void
+  DiscreteModel::vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
+                            const TrilinosWrappers::MPI::Vector &src,
+                            const bool                           transpose,
+                            const RowSubset                      rows) const
+  {
+    if (matrix_free)
+      matrix_free->vmult_rows(dst, src, transpose, rows);
+    else if (transpose)
+      matrix.Tvmult(dst, src);
+    else
+      matrix.vmult(dst, src);
+  }
+
+
+
   std::size_t
   DiscreteModel::memory_consumption() const
   {

@@ -7,28 +7,6 @@
 
 namespace ltn
 {
-  namespace
-  {
-    /** `M` or `M^T` of a model as an operator for deal.II's solvers. */
-    struct ModelOperator
-    {
-      const DiscreteModel &model;
-      const bool           transpose;
-
-      void
-      vmult(TrilinosWrappers::MPI::Vector       &dst,
-            const TrilinosWrappers::MPI::Vector &src) const
-      {
-        if (transpose)
-          model.Tvmult(dst, src);
-        else
-          model.vmult(dst, src);
-      }
-    };
-  } // namespace
-
-
-
   ModelSolver::ModelSolver(const DiscreteModel       &model,
                            const bool                 with_adjoint,
                            const ModelSolverSettings &settings)
@@ -43,14 +21,14 @@ namespace ltn
       control_partition.is_empty() ? 0 : control_partition.nth_index_in_set(0);
     if (settings.iterative)
       {
-        forward_preconditioner =
-          std::make_unique<ModelPreconditioner>(model, false);
-        counts.memory = forward_preconditioner->memory_consumption();
+        preconditioner = std::make_unique<ModelPreconditioner>(model);
+        forward_system = std::make_unique<SchurComplement>(model, false);
+        counts.memory  = preconditioner->memory_consumption() +
+                        forward_system->memory_consumption();
         if (with_adjoint)
           {
-            adjoint_preconditioner =
-              std::make_unique<ModelPreconditioner>(model, true);
-            counts.memory += adjoint_preconditioner->memory_consumption();
+            adjoint_system = std::make_unique<SchurComplement>(model, true);
+            counts.memory += adjoint_system->memory_consumption();
           }
       }
     else
@@ -97,18 +75,17 @@ namespace ltn
         if (last_norm > 0)
           x.add((b * last->rhs) / (last_norm * last_norm), last->solution);
       }
+    const SchurComplement &system =
+      transpose ? *adjoint_system : *forward_system;
+    // Right preconditioning: the tolerance is on the true residual, which
+    // is that of the Schur complement's system.
     SolverControl control(settings.max_iterations, tolerance * b_norm);
-    // Right preconditioning: the tolerance is on the true residual.
     SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
       control,
       SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(50, true));
     try
       {
-        gmres.solve(ModelOperator{model, transpose},
-                    x,
-                    b,
-                    transpose ? *adjoint_preconditioner :
-                                *forward_preconditioner);
+        gmres.solve(system, x, system.reduce(b), *preconditioner);
       }
     catch (const SolverControl::NoConvergence &)
       {
@@ -118,6 +95,7 @@ namespace ltn
                              settings.max_iterations,
                              control.last_value() / b_norm);
       }
+    system.recover(x, b);
     counts.iterations += control.last_step();
     if (last)
       {

@@ -80,6 +80,7 @@ namespace ltn
       lattice,
       stencil.offsets(),
       1,
+      0,
       model.owned,
       [this](const LatticeIndex &index) {
         return lattice.inside(index) ? 1u : 0u;

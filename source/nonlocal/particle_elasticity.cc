@@ -299,6 +299,7 @@ namespace ltn
       lattice,
       stencil.offsets(),
       n_components,
+      1,
       owned_particles,
       [this](const LatticeIndex &index) { return shared_rows(index); },
       [this](const types::global_dof_index n, Rows &rows) {

@@ -28,6 +28,18 @@ namespace ltn
   };
 
   /**
+   * The rows of `M` a product needs: all, or only those of the degrees of
+   * freedom a SchurComplement keeps (not `DiscreteModel::eliminated`), or
+   * only those of the eliminated ones.
+   */
+  enum class RowSubset : unsigned char
+  {
+    all,
+    kept,
+    eliminated
+  };
+
+  /**
    * A model's operator `M` applied without an assembled matrix (the
    * LatticeOperator of particle models): `vmult` and `Tvmult` on vectors
    * over the model's owned degrees of freedom.
@@ -44,6 +56,16 @@ namespace ltn
     virtual void
     Tvmult(TrilinosWrappers::MPI::Vector       &dst,
            const TrilinosWrappers::MPI::Vector &src) const = 0;
+
+    /**
+     * `M src` (@p transpose: `M^T src`) at the rows of @p rows; the other
+     * entries of @p dst are unspecified.
+     */
+    virtual void
+    vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
+               const TrilinosWrappers::MPI::Vector &src,
+               const bool                           transpose,
+               const RowSubset                      rows) const = 0;
 
     /** Bytes this rank holds for the operator. */
     virtual std::size_t
@@ -119,6 +141,17 @@ namespace ltn
     void
     Tvmult(TrilinosWrappers::MPI::Vector       &dst,
            const TrilinosWrappers::MPI::Vector &src) const;
+
+    /**
+     * `M src` (@p transpose: `M^T src`) at the rows of @p rows; the other
+     * entries of @p dst are unspecified. Matrix-free, the other rows are not
+     * computed; assembled, the whole product is.
+     */
+    void
+    vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
+               const TrilinosWrappers::MPI::Vector &src,
+               const bool                           transpose,
+               const RowSubset                      rows) const;
 
     /** Bytes this rank holds for `M`, the surrogate and the right side. */
     std::size_t

@@ -7,6 +7,7 @@
 #include <ltn/base/discrete_model.h>
 #include <ltn/coupling/direct_solver.h>
 #include <ltn/coupling/model_preconditioner.h>
+#include <ltn/coupling/schur_complement.h>
 
 #include <array>
 #include <memory>
@@ -20,8 +21,8 @@ namespace ltn
   struct ModelSolverSettings
   {
     /**
-     * GMRES preconditioned by ModelPreconditioner, instead of a sparse
-     * direct solver (which needs the assembled matrix).
+     * GMRES on the SchurComplement, preconditioned by ModelPreconditioner,
+     * instead of a sparse direct solver (which needs the assembled matrix).
      */
     bool iterative = false;
     /** The residual reduction relative to the right-hand side. */
@@ -142,8 +143,8 @@ namespace ltn
     types::global_dof_index              first_control;
     IndexSet                             control_partition;
     std::unique_ptr<DirectSolver>        direct;
-    std::unique_ptr<ModelPreconditioner> forward_preconditioner;
-    std::unique_ptr<ModelPreconditioner> adjoint_preconditioner;
+    std::unique_ptr<ModelPreconditioner> preconditioner;
+    std::unique_ptr<SchurComplement>     forward_system, adjoint_system;
     mutable WarmStart                    last_forward, last_adjoint;
     mutable std::array<WarmStart, 2>     last_general;
     mutable ModelSolverStatistics        counts;

@@ -38,6 +38,11 @@ namespace ltn
    * over the shared rows of the particles `j - o_k`, plus `own_rows^T y`. Both
    * read this rank's particles and the contiguous range of numbers that
    * their bonds reach, imported once per product.
+   *
+   * The last `n_eliminated_components` components of each particle are the
+   * model's eliminated degrees of freedom: vmult_rows() computes only their
+   * rows, or only the others', of the shared stencil (the stored rows are
+   * applied whole).
    */
   template <int dim>
   class LatticeOperator : public MatrixFreeOperator
@@ -51,6 +56,8 @@ namespace ltn
      * @param offsets the bond offsets `o_k`, closed under negation: every
      *   shared-stencil row reads only these neighbours and the particle.
      * @param n_components degrees of freedom per particle.
+     * @param n_eliminated_components how many of them, the last ones, are
+     *   eliminated (DiscreteModel::eliminated).
      * @param owned_particles this rank's particles, a contiguous range.
      * @param shared_rows_of per particle, the mask of its component rows
      *   (bit `c` for component `c`) that are the shared ones.
@@ -58,10 +65,11 @@ namespace ltn
      *   to read the shared one from.
      */
     LatticeOperator(
-      const ParticleLattice<dim>                              &lattice,
-      const std::vector<LatticeIndex>                         &offsets,
-      const unsigned int                                       n_components,
-      const IndexSet                                          &owned_particles,
+      const ParticleLattice<dim>      &lattice,
+      const std::vector<LatticeIndex> &offsets,
+      const unsigned int               n_components,
+      const unsigned int               n_eliminated_components,
+      const IndexSet                  &owned_particles,
       const std::function<unsigned int(const LatticeIndex &)> &shared_rows_of,
       const std::function<void(types::global_dof_index, Rows &)> &rows_of,
       const MPI_Comm                                              communicator);
@@ -73,6 +81,12 @@ namespace ltn
     void
     Tvmult(TrilinosWrappers::MPI::Vector       &dst,
            const TrilinosWrappers::MPI::Vector &src) const override;
+
+    void
+    vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
+               const TrilinosWrappers::MPI::Vector &src,
+               const bool                           transpose,
+               const RowSubset                      rows) const override;
 
     std::size_t
     memory_consumption() const override;
@@ -89,9 +103,9 @@ namespace ltn
     /**
      * The shared-stencil part of `M x` (or of `M^T x`) for this rank's
      * particles, from the values @p x of the relevant range into the
-     * owned values @p y.
+     * owned values @p y, at the components `[a0, a1)` of each particle only.
      */
-    template <int n_c, bool transpose>
+    template <int n_c, bool transpose, int a0, int a1>
     void
     apply_stencil(const double *x, double *y) const;
 
@@ -100,6 +114,7 @@ namespace ltn
     /** The index of the offset `-o_k`. */
     std::vector<unsigned int> reverse;
     const unsigned int        n_components;
+    const unsigned int        n_eliminated_components;
     /** This rank's particles `[first, end)`, and the range they reach. */
     types::global_dof_index first, end, reach_first, reach_end;
     /** Per particle of the reached range: the mask of its shared rows. */
@@ -126,8 +141,9 @@ namespace ltn
   store_particle_operator(
     const ParticleLattice<dim>                                     &lattice,
     const std::vector<typename ParticleLattice<dim>::LatticeIndex> &offsets,
-    const unsigned int                                       n_components,
-    const IndexSet                                          &owned_particles,
+    const unsigned int n_components,
+    const unsigned int n_eliminated_components,
+    const IndexSet    &owned_particles,
     const std::function<unsigned int(
       const typename ParticleLattice<dim>::LatticeIndex &)> &shared_rows_of,
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,

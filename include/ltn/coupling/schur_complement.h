@@ -1,0 +1,62 @@
+#pragma once
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <ltn/base/discrete_model.h>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * A model's system `M x = b` (with @p transpose, `M^T x = b`) with the
+   * degrees of freedom `t` whose block of `M` is diagonal (the dilatation
+   * of LPS, `DiscreteModel::eliminated`) eliminated (doc/discretization.md,
+   * section 16). With `u` the rest, `M = [[A, B], [C, D]]`,
+   *
+   *   S u = g,  S = A - B D^-1 C,  g = b_u - B D^-1 b_t,
+   *   t = D^-1 (b_t - C u),
+   *
+   * and the residual of the whole system is then `(g - S u, 0)`: a Krylov
+   * method on `S` keeps its tolerance for `M`. A product with `S` is two
+   * partial ones with `M`: its `t`-rows of `[v; 0]` (`C v`), then its
+   * `u`-rows of `[v; -D^-1 C v]`; matrix-free, the two cost one whole
+   * product, where a Krylov method on `M` preconditioned by the same
+   * factorization needs three. Vectors keep the model's numbering, zero at
+   * `t`. For a model without such degrees of freedom `S = M`.
+   */
+  class SchurComplement
+  {
+  public:
+    SchurComplement(const DiscreteModel &model, const bool transpose);
+
+    /** `dst = S src`; the entries of @p src at `t` are ignored. */
+    void
+    vmult(TrilinosWrappers::MPI::Vector       &dst,
+          const TrilinosWrappers::MPI::Vector &src) const;
+
+    /** The right-hand side `g` of `S u = g` for @p b. */
+    TrilinosWrappers::MPI::Vector
+    reduce(const TrilinosWrappers::MPI::Vector &b) const;
+
+    /** Complete @p x, holding `u`, with `t = D^-1 (b_t - C u)` for @p b. */
+    void
+    recover(TrilinosWrappers::MPI::Vector       &x,
+            const TrilinosWrappers::MPI::Vector &b) const;
+
+    /** Bytes this rank holds (the diagonal and work vectors). */
+    std::size_t
+    memory_consumption() const;
+
+  private:
+    const DiscreteModel &model;
+    const bool           transpose;
+    /** Does the model have eliminated degrees of freedom on any rank? */
+    bool eliminates = false;
+    /** `1 / D` at `t`, 0 elsewhere. */
+    TrilinosWrappers::MPI::Vector inverse_diagonal;
+    /** 1 at `u`, 0 at `t`. */
+    TrilinosWrappers::MPI::Vector         kept;
+    mutable TrilinosWrappers::MPI::Vector v, w;
+  };
+} // namespace ltn

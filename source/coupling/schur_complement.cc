@@ -1,0 +1,97 @@
+#include <ltn/coupling/schur_complement.h>
+
+namespace ltn
+{
+  SchurComplement::SchurComplement(const DiscreteModel &model,
+                                   const bool           transpose)
+    : model(model)
+    , transpose(transpose)
+  {
+    eliminates = Utilities::MPI::sum(model.eliminated.n_elements(),
+                                     model.communicator) > 0;
+    if (!eliminates)
+      return;
+    v                = model.new_vector();
+    w                = model.new_vector();
+    kept             = model.new_vector();
+    kept             = 1.;
+    inverse_diagonal = model.new_vector();
+    // D: M applied to the indicator of the eliminated degrees of freedom,
+    // read at them (the same for M^T: D is diagonal).
+    for (const auto i : model.eliminated)
+      {
+        v(i)    = 1.;
+        kept(i) = 0.;
+      }
+    v.compress(VectorOperation::insert);
+    kept.compress(VectorOperation::insert);
+    model.vmult(w, v);
+    for (const auto i : model.eliminated)
+      inverse_diagonal(i) = 1. / w(i);
+    inverse_diagonal.compress(VectorOperation::insert);
+  }
+
+
+
+  void
+  SchurComplement::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                         const TrilinosWrappers::MPI::Vector &src) const
+  {
+    if (!eliminates)
+      {
+        model.vmult_rows(dst, src, transpose, RowSubset::all);
+        return;
+      }
+    // The t-rows of M [u; 0]: C u; v = [u; -D^-1 C u].
+    v = src;
+    v.scale(kept);
+    model.vmult_rows(w, v, transpose, RowSubset::eliminated);
+    w.scale(inverse_diagonal);
+    v -= w;
+    // The u-rows of M v: A u - B D^-1 C u.
+    model.vmult_rows(dst, v, transpose, RowSubset::kept);
+    dst.scale(kept);
+  }
+
+
+
+  TrilinosWrappers::MPI::Vector
+  SchurComplement::reduce(const TrilinosWrappers::MPI::Vector &b) const
+  {
+    if (!eliminates)
+      return b;
+    // The u-rows of M [0; D^-1 b_t]: B D^-1 b_t.
+    v = b;
+    v.scale(inverse_diagonal);
+    model.vmult_rows(w, v, transpose, RowSubset::kept);
+    TrilinosWrappers::MPI::Vector g = b;
+    g -= w;
+    g.scale(kept);
+    return g;
+  }
+
+
+
+  void
+  SchurComplement::recover(TrilinosWrappers::MPI::Vector       &x,
+                           const TrilinosWrappers::MPI::Vector &b) const
+  {
+    if (!eliminates)
+      return;
+    // The t-rows of M [u; 0]: C u.
+    x.scale(kept);
+    model.vmult_rows(w, x, transpose, RowSubset::eliminated);
+    v = b;
+    v -= w;
+    v.scale(inverse_diagonal);
+    x += v;
+  }
+
+
+
+  std::size_t
+  SchurComplement::memory_consumption() const
+  {
+    return 4 * kept.memory_consumption();
+  }
+} // namespace ltn
