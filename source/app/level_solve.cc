@@ -46,6 +46,7 @@ namespace ltn
     record.explicit_controls            = solution.explicit_controls;
     record.coarse_modes                 = solution.coarse_modes;
     record.preconditioner_setup_seconds = solution.preconditioner_setup_seconds;
+    record.standalone_seconds           = solution.standalone_seconds;
     const std::array<const DiscreteModel *, 2> models = {{nonlocal, local}};
     for (const unsigned int k : {0u, 1u})
       {

@@ -59,6 +59,9 @@ namespace ltn
           preconditioner["coarse modes"]      = level.coarse_modes;
           preconditioner["setup seconds"] = level.preconditioner_setup_seconds;
         }
+      if (level.standalone_seconds > 0)
+        j["solver"]["standalone model solves seconds"] =
+          level.standalone_seconds;
       const char *names[2] = {"nonlocal", "local"};
       for (const unsigned int k : {0u, 1u})
         if (level.model_solves[k] > 0)

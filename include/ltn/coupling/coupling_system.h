@@ -127,6 +127,13 @@ namespace ltn
     unsigned int coarse_modes = 0;
     /** Wall time to build that preconditioner. */
     double preconditioner_setup_seconds = 0;
+    /**
+     * Wall time of what solving each model once alone would cost with the
+     * same solvers and tolerances: building both model solvers, and the
+     * last forward solve of each with its data and the final controls (the
+     * reduced-space CG; 0 for the other methods).
+     */
+    double standalone_seconds = 0;
     /** Per model: its own solver's solves, iterations and memory. */
     std::array<ModelSolverStatistics, 2> model_solvers;
   };

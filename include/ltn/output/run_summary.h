@@ -34,6 +34,8 @@ namespace ltn
     unsigned int explicit_controls            = 0;
     unsigned int coarse_modes                 = 0;
     double       preconditioner_setup_seconds = 0;
+    /** CouplingSolution::standalone_seconds. */
+    double standalone_seconds = 0;
     /** Per model (nonlocal, local): its own solver's solves, iterations. */
     std::array<unsigned int, 2> model_solves     = {{0, 0}};
     std::array<unsigned int, 2> model_iterations = {{0, 0}};
