@@ -34,11 +34,11 @@ namespace ltn
                          const ModelSolverSettings &model_solvers,
                          const ControlPreconditionerSettings &controls)
   {
-    Timer       solver_setup;
-    ModelSolver nonlocal_solver(*system.models[nonlocal_model],
+    Timer        solver_setup;
+    ModelSolver  nonlocal_solver(*system.models[nonlocal_model],
                                 true,
                                 model_solvers);
-    ModelSolver local_solver(*system.models[local_model], true, model_solvers);
+    ModelSolver  local_solver(*system.models[local_model], true, model_solvers);
     const double solver_setup_seconds = solver_setup.wall_time();
     const ReducedHessian<dim> hessian(system,
                                       {{&nonlocal_solver, &local_solver}});
@@ -105,7 +105,7 @@ namespace ltn
     solution.fields[local_model] = local_solver.forward(theta.block(1), true);
     solution.standalone_seconds =
       solver_setup_seconds + final_solves.wall_time();
-    solution.model_solvers       = {
+    solution.model_solvers = {
       {nonlocal_solver.statistics(), local_solver.statistics()}};
     return solution;
   }
