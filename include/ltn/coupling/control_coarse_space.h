@@ -34,6 +34,11 @@ namespace ltn
     /** The coarse level spanned by @p Z (orthonormal) for the operator @p H. */
     ControlCoarseSpace(std::vector<BlockVectorType> Z, const Operator &H);
 
+    /** Not copyable: a copied LAPACKFullMatrix forgets its factorization. */
+    ControlCoarseSpace(const ControlCoarseSpace &) = delete;
+    ControlCoarseSpace &
+    operator=(const ControlCoarseSpace &) = delete;
+
     /** `dst = Q src + (I - Q H) P^{-1} (I - H Q) src`, `P^{-1}` @p smooth. */
     void
     balance(BlockVectorType       &dst,
