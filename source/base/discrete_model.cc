@@ -35,7 +35,7 @@ namespace ltn
                        const TrilinosWrappers::MPI::Vector &src) const
   {
     if (matrix_free)
-      matrix_free->vmult(dst, src);
+      matrix_free->vmult_rows(dst, src, false, RowSubset::all);
     else
       matrix.vmult(dst, src);
   }
@@ -47,7 +47,7 @@ namespace ltn
                         const TrilinosWrappers::MPI::Vector &src) const
   {
     if (matrix_free)
-      matrix_free->Tvmult(dst, src);
+      matrix_free->vmult_rows(dst, src, true, RowSubset::all);
     else
       matrix.Tvmult(dst, src);
   }

@@ -41,21 +41,13 @@ namespace ltn
 
   /**
    * A model's operator `M` applied without an assembled matrix (the
-   * LatticeOperator of particle models): `vmult` and `Tvmult` on vectors
-   * over the model's owned degrees of freedom.
+   * LatticeOperator of particle models), on vectors over the model's owned
+   * degrees of freedom.
    */
   class MatrixFreeOperator
   {
   public:
     virtual ~MatrixFreeOperator() = default;
-
-    virtual void
-    vmult(TrilinosWrappers::MPI::Vector       &dst,
-          const TrilinosWrappers::MPI::Vector &src) const = 0;
-
-    virtual void
-    Tvmult(TrilinosWrappers::MPI::Vector       &dst,
-           const TrilinosWrappers::MPI::Vector &src) const = 0;
 
     /**
      * `M src` (@p transpose: `M^T src`) at the rows of @p rows; the other

@@ -75,14 +75,6 @@ namespace ltn
       const MPI_Comm                                              communicator);
 
     void
-    vmult(TrilinosWrappers::MPI::Vector       &dst,
-          const TrilinosWrappers::MPI::Vector &src) const override;
-
-    void
-    Tvmult(TrilinosWrappers::MPI::Vector       &dst,
-           const TrilinosWrappers::MPI::Vector &src) const override;
-
-    void
     vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
                const TrilinosWrappers::MPI::Vector &src,
                const bool                           transpose,
