@@ -1,11 +1,14 @@
 #include <ltn/coupling/model_preconditioner.h>
 
+#include <cstdlib>
+
 namespace ltn
 {
   ModelPreconditioner::ModelPreconditioner(const DiscreteModel &model)
+    : on_surrogate(model.surrogate.m() > 0)
+    , node_dofs(model.node_dofs)
+    , surrogate_components(model.surrogate_components)
   {
-    const TrilinosWrappers::SparseMatrix &matrix =
-      model.surrogate.m() > 0 ? model.surrogate : model.matrix;
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
     data.higher_order_elements = false;
@@ -15,8 +18,29 @@ namespace ltn
     // more.
     data.smoother_sweeps       = 3;
     data.aggregation_threshold = 1e-4;
-    data.constant_modes        = model.constant_modes;
-    amg.initialize(matrix, data);
+    if (!on_surrogate)
+      {
+        data.constant_modes = model.constant_modes;
+        amg.initialize(model.matrix, data);
+        return;
+      }
+    // The surrogate is scalar (its near null space the constants, ML's
+    // default). One hierarchy on it, applied per component, is a third of
+    // the size of one on the vector Laplacian, whose components ML would
+    // aggregate apart while still giving each aggregate a coarse unknown
+    // per component of the near null space.
+    if (getenv("SWEEPS"))
+      data.smoother_sweeps = atoi(getenv("SWEEPS"));
+    if (getenv("WCYCLE"))
+      data.w_cycle = true;
+    if (getenv("THRESH"))
+      data.aggregation_threshold = atof(getenv("THRESH"));
+    if (getenv("MLOUT"))
+      data.output_details = true;
+    amg.initialize(model.surrogate, data);
+    node_src.reinit(model.surrogate.locally_owned_domain_indices(),
+                    model.communicator);
+    node_dst.reinit(node_src);
   }
 
 
@@ -25,7 +49,23 @@ namespace ltn
   ModelPreconditioner::vmult(TrilinosWrappers::MPI::Vector       &dst,
                              const TrilinosWrappers::MPI::Vector &src) const
   {
-    amg.vmult(dst, src);
+    if (!on_surrogate)
+      {
+        amg.vmult(dst, src);
+        return;
+      }
+    // The identity at the eliminated components (a Schur complement's
+    // vectors are zero there).
+    dst                     = src;
+    const std::size_t nodes = node_src.locally_owned_size();
+    for (unsigned int c = 0; c < surrogate_components; ++c)
+      {
+        for (std::size_t i = 0; i < nodes; ++i)
+          node_src.begin()[i] = src.begin()[node_dofs * i + c];
+        amg.vmult(node_dst, node_src);
+        for (std::size_t i = 0; i < nodes; ++i)
+          dst.begin()[node_dofs * i + c] = node_dst.begin()[i];
+      }
   }
 
 
@@ -33,6 +73,7 @@ namespace ltn
   std::size_t
   ModelPreconditioner::memory_consumption() const
   {
-    return amg.memory_consumption();
+    return amg.memory_consumption() + node_src.memory_consumption() +
+           node_dst.memory_consumption();
   }
 } // namespace ltn

@@ -38,41 +38,36 @@ namespace ltn
       return bonds;
     };
 
-    const auto             n_dofs = model.owned.size();
-    DynamicSparsityPattern dsp(n_dofs, n_dofs, model.owned);
+    const auto             n_particles = owned_particles.size();
+    DynamicSparsityPattern dsp(n_particles, n_particles, owned_particles);
     for (const auto p : owned_particles)
       {
-        const bool free = lattice.inside(lattice.index(p));
-        if (free)
-          axis_bonds(p);
-        for (unsigned int c = 0; c < n_components; ++c)
+        dsp.add(p, p);
+        if (lattice.inside(lattice.index(p)))
           {
-            const auto row = n_components * p + c;
-            dsp.add(row, row);
-            if (free && c < n_field_components)
-              for (const auto q : neighbours)
-                dsp.add(row, n_components * q + c);
+            axis_bonds(p);
+            for (const auto q : neighbours)
+              dsp.add(p, q);
           }
       }
-    model.surrogate.reinit(model.owned, model.owned, dsp, model.communicator);
+    model.surrogate.reinit(owned_particles,
+                           owned_particles,
+                           dsp,
+                           model.communicator);
     for (const auto p : owned_particles)
       {
-        const bool         free  = lattice.inside(lattice.index(p));
-        const unsigned int bonds = free ? axis_bonds(p) : 0;
-        for (unsigned int c = 0; c < n_components; ++c)
+        if (!lattice.inside(lattice.index(p)))
           {
-            const auto row = n_components * p + c;
-            if (!free || c >= n_field_components)
-              {
-                model.surrogate.set(row, row, 1.);
-                continue;
-              }
-            model.surrogate.set(row, row, coupling * bonds);
-            for (const auto q : neighbours)
-              model.surrogate.set(row, n_components * q + c, -coupling);
+            model.surrogate.set(p, p, 1.);
+            continue;
           }
+        model.surrogate.set(p, p, coupling * axis_bonds(p));
+        for (const auto q : neighbours)
+          model.surrogate.set(p, q, -coupling);
       }
     model.surrogate.compress(VectorOperation::insert);
+    model.node_dofs            = n_components;
+    model.surrogate_components = n_field_components;
   }
 
   template void

@@ -103,9 +103,6 @@ namespace ltn
       [](const Point<dim> &, const Point<dim> &) { return false; },
       model);
     model.eliminated = IndexSet(model.owned.size());
-    model.constant_modes.assign(1,
-                                std::vector<bool>(model.owned.n_elements(),
-                                                  true));
 
     model.rhs = model.new_vector();
     for (const auto i : model.owned)

@@ -308,8 +308,9 @@ namespace ltn
       matrix_free,
       model);
 
-    // The surrogate for AMG: the vector Laplacian on the lattice, scaled to
-    // the diagonal of the displacement rows, without the bonds cracks cut.
+    // The surrogate for AMG: the Laplacian on the lattice, for each
+    // displacement component, scaled to the diagonal of the displacement
+    // rows, without the bonds cracks cut.
     const double diagonal = [&] {
       double sum = 0;
       for (std::size_t k = 0; k < stencil.bonds().size(); ++k)
@@ -332,11 +333,6 @@ namespace ltn
     for (const auto n : owned_particles)
       model.eliminated.add_index(dof(n, dim));
     model.eliminated.compress();
-    model.constant_modes.assign(dim,
-                                std::vector<bool>(model.owned.n_elements()));
-    for (std::size_t i = 0; i < model.owned.n_elements(); ++i)
-      if (i % n_components < dim)
-        model.constant_modes[i % n_components][i] = true;
 
     model.rhs = model.new_vector();
     for (const auto n : owned_particles)

@@ -111,10 +111,17 @@ namespace ltn
      */
     /** @{ */
     /**
-     * A sparse matrix close to `M` (spectrally) for algebraic multigrid,
-     * with identity rows at `eliminated`; empty: AMG works on `matrix`.
+     * A sparse matrix close to `M` (spectrally) for algebraic multigrid, or
+     * empty (AMG then works on `matrix`). Its rows are the model's nodes
+     * (particles), whose `node_dofs` degrees of freedom are numbered
+     * `node_dofs * node + c`: one scalar operator standing in for `M` in
+     * each of the first `surrogate_components` components, which the
+     * surrogate does not couple (a vector Laplacian); the other components
+     * are `eliminated`.
      */
     TrilinosWrappers::SparseMatrix surrogate;
+    unsigned int                   node_dofs            = 1;
+    unsigned int                   surrogate_components = 1;
     /**
      * The owned degrees of freedom whose block of `M` is diagonal and
      * which a preconditioner eliminates first (the dilatation of LPS).

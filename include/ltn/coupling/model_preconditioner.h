@@ -12,10 +12,11 @@ namespace ltn
   /**
    * The preconditioner of a model's iterative solver (doc/discretization.md,
    * section 16): algebraic multigrid (Trilinos ML, one V-cycle) on the
-   * model's surrogate, or on its matrix where it has none. Where the model
-   * eliminates degrees of freedom (SchurComplement), it stands in for the
-   * inverse of the Schur complement; the surrogate's rows there are
-   * identities. The same hierarchy serves `M` and `M^T`.
+   * model's matrix, or on its scalar surrogate, one V-cycle per component
+   * the surrogate stands in for. Where the model eliminates degrees of
+   * freedom (SchurComplement) it stands in for the inverse of the Schur
+   * complement, and is the identity at the eliminated ones. The same
+   * hierarchy serves `M` and `M^T`.
    */
   class ModelPreconditioner
   {
@@ -31,6 +32,12 @@ namespace ltn
     memory_consumption() const;
 
   private:
+    /** Is `amg` built on the surrogate (not on the matrix)? */
+    const bool                        on_surrogate;
+    const unsigned int                node_dofs;
+    const unsigned int                surrogate_components;
     TrilinosWrappers::PreconditionAMG amg;
+    /** One component of a vector, over the surrogate's nodes. */
+    mutable TrilinosWrappers::MPI::Vector node_src, node_dst;
   };
 } // namespace ltn

@@ -114,7 +114,12 @@ namespace ltn
     /** The mask of all `n_components` rows. */
     unsigned int all_rows;
     /** `B_k` for every offset, then `C`: row-major blocks. */
-    std::vector<double>                   blocks;
+    std::vector<double> blocks;
+    /**
+     * Per owned particle: are its rows and those of all its bond partners
+     * the shared ones (so that the transposed product needs no tests)?
+     */
+    std::vector<bool>                     interior;
     TrilinosWrappers::SparseMatrix        own_rows;
     types::global_dof_index               n_own_rows = 0;
     IndexSet                              owned_dofs, relevant;

@@ -14,21 +14,23 @@ namespace ltn
 
   /**
    * The surrogate of a particle model for algebraic multigrid
-   * (doc/discretization.md, section 16): per field component, the
-   * nearest-neighbour Laplacian on the lattice,
+   * (doc/discretization.md, section 16): the nearest-neighbour Laplacian on
+   * the lattice,
    *
    *   (L x)_p = diagonal / (2 dim) sum_{q ~ p} (x_p - x_q),
    *
    * over the axis neighbours `q` of a particle `p` of `Omega_n` whose bond
    * no crack cuts (@p is_cut); neighbours in the collar enter as zero
    * values (the model fixes them by identity rows), so `L` is symmetric.
-   * The rows of the collar and of the components beyond
-   * @p n_field_components (the dilatation) are identity rows. At fixed
-   * `eps / h` the model's operator is spectrally equivalent to it, which
-   * keeps AMG's iteration counts independent of `h`.
+   * The rows of the collar are identity rows. At fixed `eps / h` the
+   * model's operator is spectrally equivalent to `L` in each of its first
+   * @p n_field_components components (the displacement; the rest, the
+   * dilatation, are eliminated), which keeps AMG's iteration counts
+   * independent of `h`.
    *
-   * Fills `model.surrogate` over `model.owned`; this rank's
-   * @p owned_particles carry `n_components` degrees of freedom each.
+   * Fills `model.surrogate` over this rank's @p owned_particles, one row
+   * per particle, and `model.node_dofs` (@p n_components degrees of
+   * freedom per particle) and `model.surrogate_components`.
    */
   template <int dim>
   void
