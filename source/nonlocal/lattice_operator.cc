@@ -129,10 +129,11 @@ namespace ltn
         const auto         line_end = std::min(line.end, end);
         for (; p < line_end; ++p)
           {
-            bool all_shared = shared[p - reach_first] == all_rows;
+            const LatticeIndex at         = lattice.index(p);
+            bool               all_shared = shared[p - reach_first] == all_rows;
             for (unsigned int k = 0; k < offsets.size() && all_shared; ++k)
               {
-                LatticeIndex neighbour = lattice.index(p);
+                LatticeIndex neighbour = at;
                 for (unsigned int d = 0; d < dim; ++d)
                   neighbour[d] += offsets[k][d];
                 const auto         other = lattice.line(neighbour);
