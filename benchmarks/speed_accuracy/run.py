@@ -70,16 +70,19 @@ scenes = {
         "prm": os.path.join(here, "cracked_bar_3d.prm"),
         "levels": [["Nonlocal model/Particle spacing to mesh size ratio=%g" % r,
                     "Nonlocal model/Horizon to mesh size ratio=%g" % (2 * r)]
-                   for r in (1, 0.5, 0.25)],
+                   # Spacing 1/8 leaves the collar (two horizons deep) no
+                   # room inside the bar.
+                   for r in (0.5, 0.25, 0.125)],
         "runs": {
             "all peridynamic, gmres matrix-free":
                 (all_peridynamic + scalable, [0, 1, 2]),
+            # The 3D LU of the finest level's LPS matrix fills in.
             "coupled, reduced space cg, direct":
-                (["Coupling/Method=reduced space cg"] + direct, [0, 1, 2]),
+                (["Coupling/Method=reduced space cg"] + direct, [0, 1]),
             "coupled, reduced space cg, gmres matrix-free":
                 (["Coupling/Method=reduced space cg"] + scalable, [0, 1, 2]),
             "coupled, full space gmres, matrix-free":
-                (full_space_gmres, [0, 1, 2]),
+                (full_space_gmres, [0, 1]),
         },
     },
 }
