@@ -1,7 +1,5 @@
 #include <ltn/coupling/model_preconditioner.h>
 
-#include <cstdlib>
-
 namespace ltn
 {
   ModelPreconditioner::ModelPreconditioner(const DiscreteModel &model)
@@ -29,14 +27,6 @@ namespace ltn
     // the size of one on the vector Laplacian, whose components ML would
     // aggregate apart while still giving each aggregate a coarse unknown
     // per component of the near null space.
-    if (getenv("SWEEPS"))
-      data.smoother_sweeps = atoi(getenv("SWEEPS"));
-    if (getenv("WCYCLE"))
-      data.w_cycle = true;
-    if (getenv("THRESH"))
-      data.aggregation_threshold = atof(getenv("THRESH"));
-    if (getenv("MLOUT"))
-      data.output_details = true;
     amg.initialize(model.surrogate, data);
     node_src.reinit(model.surrogate.locally_owned_domain_indices(),
                     model.communicator);

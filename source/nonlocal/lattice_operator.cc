@@ -122,29 +122,22 @@ namespace ltn
     // Particles whose rows and whose bond partners' rows are all shared:
     // the transposed product needs no tests there.
     interior.assign(end - first, false);
+    std::vector<std::int64_t> origin(offsets.size());
+    std::vector<std::int64_t> lo(offsets.size()), hi(offsets.size());
     for (auto p = first; p < end;)
-      {
-        const LatticeIndex index    = lattice.index(p);
-        const auto         line     = lattice.line(index);
-        const auto         line_end = std::min(line.end, end);
-        for (; p < line_end; ++p)
-          {
-            const LatticeIndex at         = lattice.index(p);
-            bool               all_shared = shared[p - reach_first] == all_rows;
-            for (unsigned int k = 0; k < offsets.size() && all_shared; ++k)
-              {
-                LatticeIndex neighbour = at;
-                for (unsigned int d = 0; d < dim; ++d)
-                  neighbour[d] += offsets[k][d];
-                const auto         other = lattice.line(neighbour);
-                const std::int64_t j     = other.origin + neighbour[0];
-                all_shared = j >= static_cast<std::int64_t>(other.begin) &&
-                             j < static_cast<std::int64_t>(other.end) &&
-                             shared[j - reach_first] == all_rows;
-              }
-            interior[p - first] = all_shared;
-          }
-      }
+      for (const auto line_end = bond_lines(p, origin, lo, hi); p < line_end;
+           ++p)
+        {
+          const std::int64_t i          = p;
+          bool               all_shared = shared[i - reach_first] == all_rows;
+          for (unsigned int k = 0; k < offsets.size() && all_shared; ++k)
+            {
+              const std::int64_t j = origin[k] + i;
+              all_shared =
+                j >= lo[k] && j < hi[k] && shared[j - reach_first] == all_rows;
+            }
+          interior[p - first] = all_shared;
+        }
 
     // The other rows, stored.
     const types::global_dof_index n_dofs = n_components * lattice.n_particles();
@@ -189,6 +182,30 @@ namespace ltn
 
 
   template <int dim>
+  types::global_dof_index
+  LatticeOperator<dim>::bond_lines(const types::global_dof_index p,
+                                   std::vector<std::int64_t>    &origin,
+                                   std::vector<std::int64_t>    &lo,
+                                   std::vector<std::int64_t>    &hi) const
+  {
+    const LatticeIndex index = lattice.index(p);
+    const auto         line  = lattice.line(index);
+    for (unsigned int k = 0; k < offsets.size(); ++k)
+      {
+        LatticeIndex neighbour = index;
+        for (unsigned int d = 0; d < dim; ++d)
+          neighbour[d] += offsets[k][d];
+        const auto other = lattice.line(neighbour);
+        origin[k]        = other.origin + offsets[k][0] - line.origin;
+        lo[k]            = other.begin;
+        hi[k]            = other.end;
+      }
+    return std::min(line.end, end);
+  }
+
+
+
+  template <int dim>
   template <int n_c, bool transpose, int a0, int a1>
   void
   LatticeOperator<dim>::apply_stencil(const double *x, double *y) const
@@ -226,19 +243,7 @@ namespace ltn
       };
     for (auto p = first; p < end;)
       {
-        const LatticeIndex index = lattice.index(p);
-        const auto         line  = lattice.line(index);
-        for (unsigned int k = 0; k < n_offsets; ++k)
-          {
-            LatticeIndex neighbour = index;
-            for (unsigned int d = 0; d < dim; ++d)
-              neighbour[d] += offsets[k][d];
-            const auto other = lattice.line(neighbour);
-            origin[k]        = other.origin + offsets[k][0] - line.origin;
-            lo[k]            = other.begin;
-            hi[k]            = other.end;
-          }
-        const types::global_dof_index line_end = std::min(line.end, end);
+        const auto line_end = bond_lines(p, origin, lo, hi);
         for (; p < line_end; ++p)
           {
             const std::int64_t i    = p;
@@ -246,6 +251,8 @@ namespace ltn
             const unsigned int rows = mask[i - base];
             for (auto &row : sum)
               row.fill(0.);
+            // Read per particle: hoisted out of the loops, it made GCC 12
+            // compile the transposed product 30 % slower.
             const double *centre = &blocks[n_offsets * n_c * n_c];
             if (!transpose)
               {

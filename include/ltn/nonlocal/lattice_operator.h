@@ -93,6 +93,18 @@ namespace ltn
 
   private:
     /**
+     * For the particles from @p p to the end of its lattice line (or of
+     * this rank's range, the number returned), where the bond along `o_k`
+     * of particle `i` reaches: number `origin[k] + i`, present if in
+     * `[lo[k], hi[k])`.
+     */
+    types::global_dof_index
+    bond_lines(const types::global_dof_index p,
+               std::vector<std::int64_t>    &origin,
+               std::vector<std::int64_t>    &lo,
+               std::vector<std::int64_t>    &hi) const;
+
+    /**
      * The shared-stencil part of `M x` (or of `M^T x`) for this rank's
      * particles, from the values @p x of the relevant range into the
      * owned values @p y, at the components `[a0, a1)` of each particle only.
