@@ -5,7 +5,8 @@ usage: run.py [--ltn build/ltn] [--out DIR] [--scenes 1e4 3e4 ...]
 
 Runs benchmarks/scaling/lps_bar_3d_<N>.prm (the cracked tensile bar of
 parameter_files/lps_bar_3d_tensile_crack.prm with finer particle lattices;
-matrix-free LPS, reduced-space CG with AMG-preconditioned GMRES in each model)
+matrix-free LPS, reduced-space CG with AMG-preconditioned CG in the particle
+model and GMRES in the FEM model)
 on each number of MPI ranks. Writes per run the particle and FEM sizes, the
 wall time per phase (and of the control preconditioner's setup, and of
 solving each model once alone with the same solvers: the standalone cost the

@@ -38,6 +38,8 @@ scalable = ["Coupling/Model solvers=preconditioned gmres",
             "Nonlocal model/Operator=matrix-free",
             "Coupling/Relative tolerance=1e-10",
             "Coupling/Model solver tolerance=1e-12"]
+# The same with CG on the particle model's free block (doc §16).
+scalable_cg = scalable + ["Coupling/Model solvers=preconditioned cg"]
 # The full-space GMRES solves each model loosely inside its preconditioner.
 full_space_gmres = (["Coupling/Method=full space gmres"] + scalable +
                     ["Coupling/Model solver tolerance=1e-1"])
@@ -51,6 +53,8 @@ scenes = {
         "runs": {
             "all peridynamic, gmres matrix-free":
                 (all_peridynamic + scalable, [0, 1, 2]),
+            "all peridynamic, cg matrix-free":
+                (all_peridynamic + scalable_cg, [0, 1, 2]),
             # The sparse LU of 1.2M particle dofs does not fit: two levels.
             "all peridynamic, direct": (all_peridynamic + direct, [0, 1]),
             # The saddle-point LU fills in: minutes from the second level on.
@@ -61,6 +65,8 @@ scenes = {
             # Level 1 takes 5 minutes, level 2 would take about half an hour.
             "coupled, reduced space cg, gmres matrix-free":
                 (["Coupling/Method=reduced space cg"] + scalable, [0, 1]),
+            "coupled, reduced space cg, cg matrix-free":
+                (["Coupling/Method=reduced space cg"] + scalable_cg, [0, 1]),
             # Level 1 failed (exit status 1 after 7 minutes, 2026-11-22).
             "coupled, full space gmres, matrix-free":
                 (full_space_gmres, [0]),
@@ -76,11 +82,15 @@ scenes = {
         "runs": {
             "all peridynamic, gmres matrix-free":
                 (all_peridynamic + scalable, [0, 1, 2]),
+            "all peridynamic, cg matrix-free":
+                (all_peridynamic + scalable_cg, [0, 1, 2]),
             # The 3D LU of the finest level's LPS matrix fills in.
             "coupled, reduced space cg, direct":
                 (["Coupling/Method=reduced space cg"] + direct, [0, 1]),
             "coupled, reduced space cg, gmres matrix-free":
                 (["Coupling/Method=reduced space cg"] + scalable, [0, 1, 2]),
+            "coupled, reduced space cg, cg matrix-free":
+                (["Coupling/Method=reduced space cg"] + scalable_cg, [0, 1, 2]),
             "coupled, full space gmres, matrix-free":
                 (full_space_gmres, [0, 1]),
         },

@@ -37,9 +37,10 @@ namespace ltn
         solution.fields[k] = solver.forward(solver.new_control_vector(), true);
         solution.model_solvers[k] = solver.statistics();
         solution.iterations       = solution.model_solvers[k].iterations;
-        record.solver_method      = parameters.model_solvers.iterative ?
-                                      "preconditioned gmres" :
-                                      "direct";
+        record.solver_method =
+          !parameters.model_solvers.iterative          ? "direct" :
+          parameters.model_solvers.conjugate_gradients ? "preconditioned cg" :
+                                                         "preconditioned gmres";
       }
     record.iterations                   = solution.iterations;
     record.residual                     = solution.residual;

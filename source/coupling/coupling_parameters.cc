@@ -65,14 +65,19 @@ namespace ltn
                         "24 modes at degree 1, 60 at degree 2).");
       prm.declare_entry("Model solvers",
                         "direct",
-                        Patterns::Selection("direct|preconditioned gmres"),
+                        Patterns::Selection("direct|preconditioned gmres|"
+                                            "preconditioned cg"),
                         "How each model's equations are solved, inside the "
                         "reduced-space CG or alone: `direct` (sparse LU of "
-                        "the assembled matrix) or `preconditioned gmres` "
+                        "the assembled matrix), `preconditioned gmres` "
                         "(GMRES with algebraic multigrid on the finite "
                         "element matrix, or on the nonlocal model's "
                         "nearest-neighbour surrogate after eliminating the "
-                        "dilatation; works matrix-free).");
+                        "dilatation; works matrix-free) or `preconditioned "
+                        "cg` (the same, but CG on the particle model's free "
+                        "unknowns, whose block is symmetric positive "
+                        "definite, for forward and adjoint solves alike; "
+                        "the finite element model keeps GMRES).");
       prm.declare_entry("Model solver tolerance",
                         "1e-13",
                         Patterns::Double(0),
@@ -112,8 +117,9 @@ namespace ltn
                   "`two level` or `block diagonal` with Coupling/Method = "
                   "full space gmres (its preconditioner eliminates the "
                   "controls with it)");
-      model_solvers.iterative =
-        prm.get("Model solvers") == "preconditioned gmres";
+      model_solvers.iterative = prm.get("Model solvers") != "direct";
+      model_solvers.conjugate_gradients =
+        prm.get("Model solvers") == "preconditioned cg";
       model_solvers.relative_tolerance =
         prm.get_double("Model solver tolerance");
       model_solvers.max_iterations = max_iterations;
@@ -141,8 +147,9 @@ namespace ltn
     check_input(model_solvers.iterative,
                 "Coupling/Model solvers",
                 "direct",
-                "`preconditioned gmres` with Nonlocal model/Operator = "
-                "matrix-free (a direct solver needs the assembled matrix)");
+                "`preconditioned gmres` or `preconditioned cg` with "
+                "Nonlocal model/Operator = matrix-free (a direct solver "
+                "needs the assembled matrix)");
     check_input(!coupled || method != "full space direct",
                 "Coupling/Method",
                 method,

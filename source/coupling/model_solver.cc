@@ -1,3 +1,4 @@
+#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
@@ -7,11 +8,50 @@
 
 namespace ltn
 {
+  namespace
+  {
+    /** The free block `S_FF = Z S Z` of a Schur complement, for CG. */
+    struct FreeBlock
+    {
+      const SchurComplement &system;
+
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        system.vmult_free_block(dst, src);
+      }
+    };
+
+    /**
+     * `Z P Z`, the model's preconditioner on the free block: symmetric
+     * positive definite there when `P` is (CG's vectors lie in the range of
+     * `Z`).
+     */
+    struct FreeBlockPreconditioner
+    {
+      const ModelPreconditioner &preconditioner;
+      const SchurComplement     &system;
+
+      void
+      vmult(TrilinosWrappers::MPI::Vector       &dst,
+            const TrilinosWrappers::MPI::Vector &src) const
+      {
+        preconditioner.vmult(dst, src);
+        system.restrict_to_free_block(dst);
+      }
+    };
+  } // namespace
+
+
+
   ModelSolver::ModelSolver(const DiscreteModel       &model,
                            const bool                 with_adjoint,
                            const ModelSolverSettings &settings)
     : model(model)
     , settings(settings)
+    , use_cg(settings.iterative && settings.conjugate_gradients &&
+             model.symmetric_free_block)
     , tolerance(settings.relative_tolerance)
     , control_dofs(model.controls.begin(), model.controls.end())
   {
@@ -77,31 +117,88 @@ namespace ltn
       }
     const SchurComplement &system =
       transpose ? *adjoint_system : *forward_system;
-    // Right preconditioning: the tolerance is on the true residual, which
-    // is that of the Schur complement's system.
+    // The tolerance is on the true residual, which is that of the Schur
+    // complement's system (GMRES: with right preconditioning).
     SolverControl control(settings.max_iterations, tolerance * b_norm);
-    SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-      control,
-      SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(50, true));
     try
       {
-        gmres.solve(system, x, system.reduce(b), *preconditioner);
+        if (use_cg)
+          solve_free_block(transpose, x, b, control);
+        else
+          {
+            SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+              control,
+              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(50,
+                                                                         true));
+            gmres.solve(system, x, system.reduce(b), *preconditioner);
+            system.recover(x, b);
+          }
       }
     catch (const SolverControl::NoConvergence &)
       {
-        throw no_convergence("a model's GMRES",
+        throw no_convergence(use_cg ? "a model's CG" : "a model's GMRES",
                              "Coupling/Model solver tolerance",
                              tolerance,
                              settings.max_iterations,
                              control.last_value() / b_norm);
       }
-    system.recover(x, b);
     counts.iterations += control.last_step();
     if (last)
       {
         last->rhs      = b;
         last->solution = x;
       }
+  }
+
+
+
+  void
+  ModelSolver::solve_free_block(const bool                           transpose,
+                                TrilinosWrappers::MPI::Vector       &x,
+                                const TrilinosWrappers::MPI::Vector &b,
+                                SolverControl &control) const
+  {
+    // With O the kept degrees of freedom outside the free block (controls
+    // and fixed data, identity rows), S = [[S_FF, S_FO], [0, I]] and S_FF is
+    // symmetric, so
+    //   S u = g:    u_O = g_O,  S_FF u_F = Z (g - S u_O),
+    //   S^T y = g:  S_FF y_F = Z g,  y_O = g_O - (S^T y_F)_O:
+    // the adjoint needs S^T once, not in every iteration.
+    const SchurComplement &system =
+      transpose ? *adjoint_system : *forward_system;
+    const SchurComplement        &block = *forward_system;
+    TrilinosWrappers::MPI::Vector g     = system.reduce(b);
+    TrilinosWrappers::MPI::Vector rhs   = g;
+    block.restrict_to_free_block(rhs);
+    TrilinosWrappers::MPI::Vector outside = g;
+    outside -= rhs;
+    TrilinosWrappers::MPI::Vector product = model.new_vector();
+    if (!transpose)
+      {
+        block.vmult(product, outside);
+        block.restrict_to_free_block(product);
+        rhs -= product;
+      }
+
+    block.restrict_to_free_block(x);
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    cg.solve(FreeBlock{block},
+             x,
+             rhs,
+             FreeBlockPreconditioner{*preconditioner, block});
+
+    if (transpose)
+      {
+        // (S^T y_F)_O; S^T's rows at the eliminated degrees of freedom are
+        // zero.
+        adjoint_system->vmult(product, x);
+        TrilinosWrappers::MPI::Vector in_block = product;
+        block.restrict_to_free_block(in_block);
+        product -= in_block;
+        outside -= product;
+      }
+    x += outside;
+    system.recover(x, b);
   }
 
 

@@ -9,10 +9,15 @@ namespace ltn
   {
     eliminates = Utilities::MPI::sum(model.eliminated.n_elements(),
                                      model.communicator) > 0;
+    v          = model.new_vector();
+    w          = model.new_vector();
+    free       = model.new_vector();
+    for (const auto i : model.owned)
+      if (model.role(i) == DofRole::free && !model.eliminated.is_element(i))
+        free(i) = 1.;
+    free.compress(VectorOperation::insert);
     if (!eliminates)
       return;
-    v                = model.new_vector();
-    w                = model.new_vector();
     kept             = model.new_vector();
     kept             = 1.;
     inverse_diagonal = model.new_vector();
@@ -38,19 +43,52 @@ namespace ltn
                          const TrilinosWrappers::MPI::Vector &src) const
   {
     if (!eliminates)
-      {
-        model.vmult_rows(dst, src, transpose, RowSubset::all);
-        return;
-      }
-    // The t-rows of M [u; 0]: C u; v = [u; -D^-1 C u].
+      model.vmult_rows(dst, src, transpose, RowSubset::all);
+    else
+      masked_product(dst, src, kept);
+  }
+
+
+
+  void
+  SchurComplement::vmult_free_block(
+    TrilinosWrappers::MPI::Vector       &dst,
+    const TrilinosWrappers::MPI::Vector &src) const
+  {
+    masked_product(dst, src, free);
+  }
+
+
+
+  void
+  SchurComplement::restrict_to_free_block(
+    TrilinosWrappers::MPI::Vector &v) const
+  {
+    v.scale(free);
+  }
+
+
+
+  void
+  SchurComplement::masked_product(
+    TrilinosWrappers::MPI::Vector       &dst,
+    const TrilinosWrappers::MPI::Vector &src,
+    const TrilinosWrappers::MPI::Vector &mask) const
+  {
     v = src;
-    v.scale(kept);
-    model.vmult_rows(w, v, transpose, RowSubset::eliminated);
-    w.scale(inverse_diagonal);
-    v -= w;
-    // The u-rows of M v: A u - B D^-1 C u.
-    model.vmult_rows(dst, v, transpose, RowSubset::kept);
-    dst.scale(kept);
+    v.scale(mask);
+    if (!eliminates)
+      model.vmult_rows(dst, v, transpose, RowSubset::all);
+    else
+      {
+        // The t-rows of M [u; 0]: C u; v = [u; -D^-1 C u].
+        model.vmult_rows(w, v, transpose, RowSubset::eliminated);
+        w.scale(inverse_diagonal);
+        v -= w;
+        // The u-rows of M v: A u - B D^-1 C u.
+        model.vmult_rows(dst, v, transpose, RowSubset::kept);
+      }
+    dst.scale(mask);
   }
 
 
@@ -92,6 +130,6 @@ namespace ltn
   std::size_t
   SchurComplement::memory_consumption() const
   {
-    return 4 * kept.memory_consumption();
+    return (eliminates ? 5 : 3) * free.memory_consumption();
   }
 } // namespace ltn

@@ -53,7 +53,7 @@ namespace ltn
                         "solvers) or `matrix-free` (one stencil shared by the "
                         "particles away from collar and cracks, rows stored "
                         "only for the others; needs Coupling/Model solvers = "
-                        "preconditioned gmres).");
+                        "preconditioned gmres or preconditioned cg).");
       prm.declare_entry("Finite element degree",
                         "1",
                         Patterns::Integer(1, 2),

@@ -103,6 +103,9 @@ namespace ltn
       [](const Point<dim> &, const Point<dim> &) { return false; },
       model);
     model.eliminated = IndexSet(model.owned.size());
+    // a_j = a_{-j}: the free block is symmetric, and positive definite
+    // (doc/discretization.md, section 11).
+    model.symmetric_free_block = true;
 
     model.rhs = model.new_vector();
     for (const auto i : model.owned)

@@ -333,6 +333,10 @@ namespace ltn
     for (const auto n : owned_particles)
       model.eliminated.add_index(dof(n, dim));
     model.eliminated.compress();
+    // The displacement rows are the gradient of an energy (section 14 of
+    // doc/discretization.md): with the dilatation eliminated, the free
+    // block is its Hessian.
+    model.symmetric_free_block = true;
 
     model.rhs = model.new_vector();
     for (const auto n : owned_particles)

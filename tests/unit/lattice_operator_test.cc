@@ -12,42 +12,12 @@
 
 #include <catch2/catch.hpp>
 
-#include <random>
+#include "particle_layout.h"
 
 using namespace ltn;
 
 namespace
 {
-  /**
-   * The body (0,2)x(0,1)^(dim-1) and Omega_n = (0,1.25)x(0.25,0.75)^...:
-   * the collar at x < 0 lies outside the body, the rest inside it.
-   */
-  template <int dim>
-  Geometry<dim>
-  layout()
-  {
-    Geometry<dim> geometry;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        geometry.body.upper[d]            = (d == 0) ? 2 : 1;
-        geometry.nonlocal_region.lower[d] = (d == 0) ? 0 : 0.25;
-        geometry.nonlocal_region.upper[d] = (d == 0) ? 1.25 : 0.75;
-      }
-    geometry.overlap_width = 0.125;
-    return geometry;
-  }
-
-  TrilinosWrappers::MPI::Vector
-  random_vector(const DiscreteModel &model, std::mt19937 &random)
-  {
-    std::uniform_real_distribution<double> value(-1, 1);
-    TrilinosWrappers::MPI::Vector          x = model.new_vector();
-    for (const auto i : model.owned)
-      x(i) = value(random);
-    x.compress(VectorOperation::insert);
-    return x;
-  }
-
   /**
    * max |M x - M_mf x| / max |M x| and the same for the transposes, over
    * random vectors, comparing the rows @p rows (of `DiscreteModel::eliminated`
@@ -92,24 +62,10 @@ namespace
   }
 
   template <int dim>
-  Crack<dim>
-  crack_at(const double x, const double half_width)
-  {
-    Crack<dim> crack;
-    for (unsigned int k = 0; k < dim; ++k)
-      {
-        crack.corners[k][0] = x;
-        for (unsigned int d = 1; d < dim; ++d)
-          crack.corners[k][d] = (k == d) ? 0.5 + half_width : 0.5 - half_width;
-      }
-    return crack;
-  }
-
-  template <int dim>
   void
   check_elasticity(const double h, const double m)
   {
-    const Geometry<dim> geometry = layout<dim>();
+    const Geometry<dim> geometry = particle_layout<dim>();
     // An inner crack and one across the whole lattice.
     const std::vector<Crack<dim>> cracks = {crack_at<dim>(0.5 + h / 2, 0.1),
                                             crack_at<dim>(1 - h / 2, 10)};
@@ -145,7 +101,7 @@ namespace
   void
   check_diffusion(const double h, const double m)
   {
-    const Geometry<dim>    geometry = layout<dim>();
+    const Geometry<dim>    geometry = particle_layout<dim>();
     const Kernel           kernel("constant", 0.5, dim, m * h);
     ParticleDiffusion<dim> assembled(geometry, kernel, h, MPI_COMM_WORLD);
     ParticleDiffusion<dim> matrix_free(geometry, kernel, h, MPI_COMM_WORLD);

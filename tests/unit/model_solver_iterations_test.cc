@@ -1,8 +1,8 @@
-// The particle models' preconditioned GMRES (AMG on the nearest-neighbour
-// surrogate, the dilatation eliminated first): at a fixed ratio eps/h its
-// iteration count stays nearly constant as h halves three times, for
-// nonlocal diffusion and LPS (with a crack), matrix-free; and its solution
-// equals the direct solver's.
+// The particle models' preconditioned GMRES and CG (AMG on the
+// nearest-neighbour surrogate, the dilatation eliminated first; CG on the
+// free block): at a fixed ratio eps/h their iteration counts stay nearly
+// constant as h halves three times, for nonlocal diffusion and LPS (with a
+// crack), matrix-free; and their solutions equal the direct solver's.
 
 #include <ltn/coupling/model_solver.h>
 #include <ltn/nonlocal/particle_diffusion.h>
@@ -40,11 +40,14 @@ namespace
 
   template <typename Particles>
   SolveResult
-  solve(const Particles &matrix_free, const Particles *assembled)
+  solve(const Particles &matrix_free,
+        const Particles *assembled,
+        const bool       conjugate_gradients)
   {
     ModelSolverSettings settings;
-    settings.iterative          = true;
-    settings.relative_tolerance = 1e-10;
+    settings.iterative           = true;
+    settings.conjugate_gradients = conjugate_gradients;
+    settings.relative_tolerance  = 1e-10;
     const ModelSolver iterative(matrix_free.get_model(), false, settings);
     const auto  x = iterative.forward(iterative.new_control_vector(), true);
     SolveResult result{iterative.statistics().iterations, 0};
@@ -59,10 +62,15 @@ namespace
     return result;
   }
 
-  /** The iteration counts at h = h0, h0/2, h0/4, h0/8 for a model. */
+  /**
+   * The iteration counts at h = h0, h0/2, h0/4, h0/8 for a model, with CG
+   * or GMRES.
+   */
   template <typename MakeParticles>
   std::vector<unsigned int>
-  iteration_counts(const double h0, const MakeParticles &make)
+  iteration_counts(const double         h0,
+                   const MakeParticles &make,
+                   const bool           conjugate_gradients)
   {
     std::vector<unsigned int> counts;
     for (unsigned int level = 0; level < 4; ++level)
@@ -71,14 +79,16 @@ namespace
         auto         particles = make(h, true);
         // The direct reference on the two coarsest lattices only.
         const auto        reference = level < 2 ? make(h, false) : nullptr;
-        const SolveResult result    = solve(*particles, reference.get());
-        INFO("h = " << h << ": " << result.iterations
-                    << " iterations, difference to direct "
-                    << result.difference_to_direct);
+        const SolveResult result =
+          solve(*particles, reference.get(), conjugate_gradients);
+        INFO((conjugate_gradients ? "CG" : "GMRES")
+             << ", h = " << h << ": " << result.iterations
+             << " iterations, difference to direct "
+             << result.difference_to_direct);
         if (level < 2)
           CHECK(result.difference_to_direct < 1e-8);
-        std::cout << "h = " << h << ": " << result.iterations << " iterations"
-                  << std::endl;
+        std::cout << (conjugate_gradients ? "CG" : "GMRES") << ", h = " << h
+                  << ": " << result.iterations << " iterations" << std::endl;
         counts.push_back(result.iterations);
       }
     return counts;
@@ -87,22 +97,27 @@ namespace
 
 
 
-TEST_CASE("particle model GMRES iterations do not grow with 1/h at fixed eps/h",
+TEST_CASE("particle model Krylov iterations do not grow with 1/h at fixed "
+          "eps/h",
           "[solvers][unit]")
 {
   SECTION("2D nonlocal diffusion, eps = 3h")
   {
     const Geometry<2> geometry = all_nonlocal<2>();
-    const auto        counts =
-      iteration_counts(1. / 16, [&](const double h, const bool matrix_free) {
-        auto particles = std::make_unique<ParticleDiffusion<2>>(
-          geometry, Kernel("constant", 0.5, 2, 3 * h), h, MPI_COMM_WORLD);
-        particles->assemble(Functions::ConstantFunction<2>(1.),
-                            Functions::ConstantFunction<2>(0.),
-                            matrix_free);
-        return particles;
-      });
-    CHECK(counts.back() < 1.5 * counts.front());
+    const auto        make     = [&](const double h, const bool matrix_free) {
+      auto particles = std::make_unique<ParticleDiffusion<2>>(
+        geometry, Kernel("constant", 0.5, 2, 3 * h), h, MPI_COMM_WORLD);
+      particles->assemble(Functions::ConstantFunction<2>(1.),
+                          Functions::ConstantFunction<2>(0.),
+                          matrix_free);
+      return particles;
+    };
+    for (const bool conjugate_gradients : {false, true})
+      {
+        const auto counts =
+          iteration_counts(1. / 16, make, conjugate_gradients);
+        CHECK(counts.back() < 1.5 * counts.front());
+      }
   }
   SECTION("2D LPS with a crack, eps = 2h")
   {
@@ -110,25 +125,29 @@ TEST_CASE("particle model GMRES iterations do not grow with 1/h at fixed eps/h",
     Crack<2>          crack;
     crack.corners[0] = Point<2>(0.5, 0.25);
     crack.corners[1] = Point<2>(0.5, 0.75);
-    const auto counts =
-      iteration_counts(1. / 16, [&](const double h, const bool matrix_free) {
-        // The crack halfway between lattice planes at every h.
-        Crack<2> shifted = crack;
-        for (auto &corner : shifted.corners)
-          corner[0] += h / 2;
-        auto particles = std::make_unique<ParticleElasticity<2>>(
-          geometry,
-          Kernel("constant", 0.5, 2, 2 * h),
-          h,
-          1.,
-          1.,
-          std::vector<Crack<2>>{shifted},
-          MPI_COMM_WORLD);
-        particles->assemble(Functions::ConstantFunction<2>(1., 2),
-                            Functions::ZeroFunction<2>(2),
-                            matrix_free);
-        return particles;
-      });
-    CHECK(counts.back() < 1.5 * counts.front());
+    const auto make  = [&](const double h, const bool matrix_free) {
+      // The crack halfway between lattice planes at every h.
+      Crack<2> shifted = crack;
+      for (auto &corner : shifted.corners)
+        corner[0] += h / 2;
+      auto particles = std::make_unique<ParticleElasticity<2>>(
+        geometry,
+        Kernel("constant", 0.5, 2, 2 * h),
+        h,
+        1.,
+        1.,
+        std::vector<Crack<2>>{shifted},
+        MPI_COMM_WORLD);
+      particles->assemble(Functions::ConstantFunction<2>(1., 2),
+                          Functions::ZeroFunction<2>(2),
+                          matrix_free);
+      return particles;
+    };
+    for (const bool conjugate_gradients : {false, true})
+      {
+        const auto counts =
+          iteration_counts(1. / 16, make, conjugate_gradients);
+        CHECK(counts.back() < 1.5 * counts.front());
+      }
   }
 }

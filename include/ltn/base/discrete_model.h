@@ -127,6 +127,14 @@ namespace ltn
      * which a preconditioner eliminates first (the dilatation of LPS).
      */
     IndexSet eliminated;
+    /**
+     * Is the block of the Schur complement `S` (SchurComplement) on the
+     * free degrees of freedom that are not `eliminated` symmetric positive
+     * definite, and so the surrogate's? Particle models' are (their
+     * operator is the Hessian of an energy): their solvers may then use CG
+     * on it, for `M` and `M^T` alike (doc/discretization.md, section 16).
+     */
+    bool symmetric_free_block = false;
     /** The near null space for AMG: per mode, a flag per owned dof. */
     std::vector<std::vector<bool>> constant_modes;
     /** @} */

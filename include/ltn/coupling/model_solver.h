@@ -2,6 +2,7 @@
 
 #include <deal.II/base/index_set.h>
 
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
@@ -25,6 +26,12 @@ namespace ltn
      * instead of a sparse direct solver (which needs the assembled matrix).
      */
     bool iterative = false;
+    /**
+     * With `iterative`: CG on the free block of the Schur complement where
+     * it is symmetric positive definite (DiscreteModel::symmetric_free_block),
+     * for `M` and `M^T` alike; GMRES elsewhere.
+     */
+    bool conjugate_gradients = false;
     /** The residual reduction relative to the right-hand side. */
     double       relative_tolerance = 1e-12;
     unsigned int max_iterations     = 1000;
@@ -134,8 +141,21 @@ namespace ltn
           const TrilinosWrappers::MPI::Vector &b,
           WarmStart                           *last) const;
 
+    /**
+     * The iterative solve of `M x = b` (@p transpose: `M^T x = b`) by CG on
+     * the free block (doc/discretization.md, section 16), from the initial
+     * guess @p x.
+     */
+    void
+    solve_free_block(const bool                           transpose,
+                     TrilinosWrappers::MPI::Vector       &x,
+                     const TrilinosWrappers::MPI::Vector &b,
+                     SolverControl                       &control) const;
+
     const DiscreteModel      &model;
     const ModelSolverSettings settings;
+    /** Solve by CG on the free block (else GMRES)? */
+    const bool use_cg;
     /** The residual reduction of the next iterative solves. */
     mutable double                       tolerance;
     std::vector<types::global_dof_index> control_dofs;

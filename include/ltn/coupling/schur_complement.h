@@ -35,6 +35,19 @@ namespace ltn
     vmult(TrilinosWrappers::MPI::Vector       &dst,
           const TrilinosWrappers::MPI::Vector &src) const;
 
+    /**
+     * `dst = Z S Z src`, with `Z` zeroing all but the free degrees of
+     * freedom that are kept: the free block `S_FF` of `S`, whose other rows
+     * are identities (controls and fixed data).
+     */
+    void
+    vmult_free_block(TrilinosWrappers::MPI::Vector       &dst,
+                     const TrilinosWrappers::MPI::Vector &src) const;
+
+    /** `Z v`: zero the entries of @p v outside the free block. */
+    void
+    restrict_to_free_block(TrilinosWrappers::MPI::Vector &v) const;
+
     /** The right-hand side `g` of `S u = g` for @p b. */
     TrilinosWrappers::MPI::Vector
     reduce(const TrilinosWrappers::MPI::Vector &b) const;
@@ -49,6 +62,12 @@ namespace ltn
     memory_consumption() const;
 
   private:
+    /** `dst = diag(mask) S diag(mask) src`. */
+    void
+    masked_product(TrilinosWrappers::MPI::Vector       &dst,
+                   const TrilinosWrappers::MPI::Vector &src,
+                   const TrilinosWrappers::MPI::Vector &mask) const;
+
     const DiscreteModel &model;
     const bool           transpose;
     /** Does the model have eliminated degrees of freedom on any rank? */
@@ -56,7 +75,9 @@ namespace ltn
     /** `1 / D` at `t`, 0 elsewhere. */
     TrilinosWrappers::MPI::Vector inverse_diagonal;
     /** 1 at `u`, 0 at `t`. */
-    TrilinosWrappers::MPI::Vector         kept;
+    TrilinosWrappers::MPI::Vector kept;
+    /** 1 at the free degrees of freedom in `u`, 0 elsewhere. */
+    TrilinosWrappers::MPI::Vector         free;
     mutable TrilinosWrappers::MPI::Vector v, w;
   };
 } // namespace ltn

@@ -1,0 +1,153 @@
+// The particle models' free block (the Schur complement of the LPS
+// dilatation at the free displacements; doc/discretization.md, section 16)
+// is symmetric and positive, for nonlocal diffusion and LPS in 2D and 3D,
+// with cracks (an inner one and one across the lattice) and a collar partly
+// outside the body, assembled and matrix-free; and CG on it solves the
+// forward and the transposed equations as the direct solver does, on any
+// number of ranks.
+
+#include <ltn/coupling/model_solver.h>
+#include <ltn/coupling/schur_complement.h>
+#include <ltn/nonlocal/particle_diffusion.h>
+#include <ltn/nonlocal/particle_elasticity.h>
+
+#include <catch2/catch.hpp>
+
+#include "particle_layout.h"
+
+using namespace ltn;
+
+namespace
+{
+  /**
+   * Over random pairs x, y in the free block: max |x.Sy - y.Sx| / (|x| |Sy|),
+   * and CHECKs x.Sx > 0.
+   */
+  double
+  asymmetry(const DiscreteModel &model)
+  {
+    REQUIRE(model.symmetric_free_block);
+    const SchurComplement block(model, false);
+    std::mt19937          random(3);
+    double                worst = 0;
+    auto                  Sx = model.new_vector(), Sy = model.new_vector();
+    for (unsigned int trial = 0; trial < 3; ++trial)
+      {
+        auto x = random_vector(model, random);
+        auto y = random_vector(model, random);
+        block.restrict_to_free_block(x);
+        block.restrict_to_free_block(y);
+        block.vmult_free_block(Sx, x);
+        block.vmult_free_block(Sy, y);
+        CHECK(x * Sx > 0);
+        worst =
+          std::max(worst,
+                   std::abs(x * Sy - y * Sx) / (x.l2_norm() * Sy.l2_norm()));
+      }
+    return worst;
+  }
+
+  double
+  relative_difference(const TrilinosWrappers::MPI::Vector &reference,
+                      TrilinosWrappers::MPI::Vector        other)
+  {
+    other -= reference;
+    return other.linfty_norm() / reference.linfty_norm();
+  }
+
+  /**
+   * CG on the matrix-free model against the direct solver on the assembled
+   * one: forward with data and random controls, adjoint of a random
+   * gradient, and M^-T of a random right-hand side (dilatation rows
+   * included).
+   */
+  void
+  check_solves(const DiscreteModel &assembled, const DiscreteModel &matrix_free)
+  {
+    ModelSolverSettings settings;
+    settings.iterative           = true;
+    settings.conjugate_gradients = true;
+    settings.relative_tolerance  = 1e-12;
+    const ModelSolver cg(matrix_free, true, settings);
+    const ModelSolver direct(assembled, true);
+
+    std::mt19937                           random(5);
+    std::uniform_real_distribution<double> value(-1, 1);
+    auto                                   theta = cg.new_control_vector();
+    for (const auto i : theta.locally_owned_elements())
+      theta(i) = value(random);
+    theta.compress(VectorOperation::insert);
+    const auto z = random_vector(assembled, random);
+
+    const double forward =
+      relative_difference(direct.forward(theta, true), cg.forward(theta, true));
+    const double adjoint =
+      relative_difference(direct.adjoint(z), cg.adjoint(z));
+    const double transposed =
+      relative_difference(direct.solve(true, z), cg.solve(true, z));
+    INFO("differences to the direct solver: forward "
+         << forward << ", adjoint " << adjoint << ", M^-T " << transposed
+         << "; " << cg.statistics().iterations << " CG iterations");
+    CHECK(forward < 1e-8);
+    CHECK(adjoint < 1e-8);
+    CHECK(transposed < 1e-8);
+  }
+
+  template <int dim>
+  void
+  check_elasticity(const double h)
+  {
+    const Geometry<dim>           geometry = particle_layout<dim>();
+    const std::vector<Crack<dim>> cracks   = {crack_at<dim>(0.5 + h / 2, 0.1),
+                                              crack_at<dim>(1 - h / 2, 10)};
+    const Kernel                  influence("constant", 0.5, dim, 2 * h);
+    ParticleElasticity<dim>       assembled(
+      geometry, influence, h, 1.3, 0.7, cracks, MPI_COMM_WORLD);
+    ParticleElasticity<dim> matrix_free(
+      geometry, influence, h, 1.3, 0.7, cracks, MPI_COMM_WORLD);
+    const Functions::ConstantFunction<dim> load(1., dim);
+    assembled.assemble(load, load, false);
+    matrix_free.assemble(load, load, true);
+    for (const DiscreteModel *model :
+         {&assembled.get_model(), &matrix_free.get_model()})
+      {
+        const double difference = asymmetry(*model);
+        INFO(dim << "D LPS: asymmetry " << difference);
+        CHECK(difference < 1e-13);
+      }
+    check_solves(assembled.get_model(), matrix_free.get_model());
+  }
+
+  template <int dim>
+  void
+  check_diffusion(const double h)
+  {
+    const Geometry<dim>    geometry = particle_layout<dim>();
+    const Kernel           kernel("constant", 0.5, dim, 3 * h);
+    ParticleDiffusion<dim> assembled(geometry, kernel, h, MPI_COMM_WORLD);
+    ParticleDiffusion<dim> matrix_free(geometry, kernel, h, MPI_COMM_WORLD);
+    const Functions::ConstantFunction<dim> data(1.);
+    assembled.assemble(data, data, false);
+    matrix_free.assemble(data, data, true);
+    for (const DiscreteModel *model :
+         {&assembled.get_model(), &matrix_free.get_model()})
+      {
+        const double difference = asymmetry(*model);
+        INFO(dim << "D diffusion: asymmetry " << difference);
+        CHECK(difference < 1e-13);
+      }
+    check_solves(assembled.get_model(), matrix_free.get_model());
+  }
+} // namespace
+
+
+
+TEST_CASE("particle models' free block is symmetric positive definite and CG "
+          "solves with it",
+          "[solvers][unit]")
+{
+  check_diffusion<2>(1. / 32);
+  check_diffusion<3>(1. / 16);
+  check_elasticity<2>(1. / 32);
+  check_elasticity<3>(1. / 16);
+}
