@@ -74,10 +74,10 @@ for ranks in options.ranks:
                 "standalone model solves seconds", 0), 2),
             "total_s": round(s["timings"]["total"], 2),
             "outer_iterations": s["solver"]["iterations"],
-            "nonlocal_gmres_per_solve":
+            "nonlocal_iterations_per_solve":
                 round(models.get("nonlocal", {}).get(
                     "iterations per solve", 0), 1),
-            "local_gmres_per_solve":
+            "local_iterations_per_solve":
                 round(models.get("local", {}).get(
                     "iterations per solve", 0), 1),
             "peak_memory_mb": round(s["memory_mb"]),

@@ -9,8 +9,11 @@
 #include <ltn/nonlocal/lattice_rows.h>
 #include <ltn/nonlocal/particle_lattice.h>
 
+#include <Epetra_Import.h>
+
 #include <array>
 #include <functional>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -137,6 +140,8 @@ namespace ltn
     IndexSet                              owned_dofs, relevant;
     MPI_Comm                              communicator;
     mutable TrilinosWrappers::MPI::Vector ghosted;
+    /** The plan that fills `ghosted` from an owned vector, built once. */
+    std::unique_ptr<Epetra_Import> importer;
   };
 
   /**
