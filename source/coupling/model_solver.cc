@@ -163,7 +163,8 @@ namespace ltn
     // symmetric, so
     //   S u = g:    u_O = g_O,  S_FF u_F = Z (g - S u_O),
     //   S^T y = g:  S_FF y_F = Z g,  y_O = g_O - (S^T y_F)_O:
-    // the adjoint needs S^T once, not in every iteration.
+    // the adjoint applies S^T around the iteration (here, in reduce() and in
+    // recover()), not in it.
     const SchurComplement &system =
       transpose ? *adjoint_system : *forward_system;
     const SchurComplement        &block = *forward_system;

@@ -370,8 +370,9 @@ namespace ltn
   {
     // With the plan built once: assigning src to `ghosted` would build it
     // anew in every product (a few per cent of a solve).
-    const int error =
-      ghosted.trilinos_vector().Import(src.trilinos_vector(), *importer, Insert);
+    const int error = ghosted.trilinos_vector().Import(src.trilinos_vector(),
+                                                       *importer,
+                                                       Insert);
     AssertThrow(error == 0, ExcMessage("importing a vector of other layout"));
     const double *x = ghosted.trilinos_vector()[0];
     double       *y = dst.trilinos_vector()[0];
