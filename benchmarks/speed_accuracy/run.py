@@ -167,6 +167,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 shown = [s for s in scenes if s in options.scenes]
+# One colour per solver in every panel.
+names = list(dict.fromkeys(n for s in shown for n in scenes[s]["runs"]))
+colour = {n: plt.get_cmap("tab10")(i % 10) for i, n in enumerate(names)}
 figure, axes = plt.subplots(1, len(shown), figsize=(6 * len(shown), 4.5),
                             squeeze=False)
 for axis, scene in zip(axes[0], shown):
@@ -174,7 +177,8 @@ for axis, scene in zip(axes[0], shown):
         mine = [r for r in rows if r["scene"] == scene and r["run"] == name]
         axis.loglog([r["total_s"] for r in mine],
                     [float(r["error"]) for r in mine],
-                    "o--" if name.startswith("all") else "s-", label=name)
+                    "o--" if name.startswith("all") else "s-", label=name,
+                    color=colour[name])
     axis.set_title(scene + ": error of the max crack opening")
     axis.set_xlabel("wall time of the run (s), 1 rank")
     axis.set_ylabel("relative error")

@@ -82,9 +82,9 @@ namespace ltn
                         "1e-13",
                         Patterns::Double(0),
                         "Residual reduction, relative to the right-hand "
-                        "side, at which a model's GMRES stops. Inside the "
-                        "reduced-space CG this is the tolerance of its first "
-                        "iteration, relaxed as the CG's residual falls "
+                        "side, at which a model's GMRES or CG stops. Inside "
+                        "the reduced-space CG this is the tolerance of its "
+                        "first iteration, relaxed as the CG's residual falls "
                         "(at most to 1e-1): keep it about 1e-2 times the "
                         "Relative tolerance. Inside the full-space GMRES's "
                         "preconditioner it may be loose (1e-1 to 1e-3).");

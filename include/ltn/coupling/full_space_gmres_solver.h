@@ -11,11 +11,11 @@ namespace ltn
    * without assembling it: flexible GMRES on the KktOperator, right
    * preconditioned by the KktPreconditioner (doc/discretization.md,
    * section 18), whose model solves are as @p model_solvers say (for
-   * iterative ones, GMRES to `model_solvers.relative_tolerance`) and whose
-   * reduced Hessian is approximated by the ControlPreconditioner (its local
-   * block and coarse products built with tight solves; with
-   * @p coarse_degree, two-level). The iteration stops when the
-   * residual has dropped by @p relative_tolerance.
+   * iterative ones, GMRES or CG to `model_solvers.relative_tolerance`) and
+   * whose reduced Hessian is approximated by the ControlPreconditioner (its
+   * local block and coarse products built with tight solves; with
+   * @p coarse_degree, two-level). The iteration stops when the residual has
+   * dropped by @p relative_tolerance.
    */
   template <int dim>
   CouplingSolution
