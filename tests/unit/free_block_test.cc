@@ -8,8 +8,6 @@
 
 #include <ltn/coupling/model_solver.h>
 #include <ltn/coupling/schur_complement.h>
-#include <ltn/nonlocal/particle_diffusion.h>
-#include <ltn/nonlocal/particle_elasticity.h>
 
 #include <catch2/catch.hpp>
 
@@ -93,47 +91,21 @@ namespace
     CHECK(transposed < 1e-8);
   }
 
-  template <int dim>
+  /**
+   * The checks of this file on a model assembled and matrix-free
+   * (@p name for the messages).
+   */
+  template <typename Particles>
   void
-  check_elasticity(const double h)
+  check(const std::string &name,
+        const Particles   &assembled,
+        const Particles   &matrix_free)
   {
-    const Geometry<dim>           geometry = particle_layout<dim>();
-    const std::vector<Crack<dim>> cracks   = {crack_at<dim>(0.5 + h / 2, 0.1),
-                                              crack_at<dim>(1 - h / 2, 10)};
-    const Kernel                  influence("constant", 0.5, dim, 2 * h);
-    ParticleElasticity<dim>       assembled(
-      geometry, influence, h, 1.3, 0.7, cracks, MPI_COMM_WORLD);
-    ParticleElasticity<dim> matrix_free(
-      geometry, influence, h, 1.3, 0.7, cracks, MPI_COMM_WORLD);
-    const Functions::ConstantFunction<dim> load(1., dim);
-    assembled.assemble(load, load, false);
-    matrix_free.assemble(load, load, true);
     for (const DiscreteModel *model :
          {&assembled.get_model(), &matrix_free.get_model()})
       {
         const double difference = asymmetry(*model);
-        INFO(dim << "D LPS: asymmetry " << difference);
-        CHECK(difference < 1e-13);
-      }
-    check_solves(assembled.get_model(), matrix_free.get_model());
-  }
-
-  template <int dim>
-  void
-  check_diffusion(const double h)
-  {
-    const Geometry<dim>    geometry = particle_layout<dim>();
-    const Kernel           kernel("constant", 0.5, dim, 3 * h);
-    ParticleDiffusion<dim> assembled(geometry, kernel, h, MPI_COMM_WORLD);
-    ParticleDiffusion<dim> matrix_free(geometry, kernel, h, MPI_COMM_WORLD);
-    const Functions::ConstantFunction<dim> data(1.);
-    assembled.assemble(data, data, false);
-    matrix_free.assemble(data, data, true);
-    for (const DiscreteModel *model :
-         {&assembled.get_model(), &matrix_free.get_model()})
-      {
-        const double difference = asymmetry(*model);
-        INFO(dim << "D diffusion: asymmetry " << difference);
+        INFO(name << ": asymmetry " << difference);
         CHECK(difference < 1e-13);
       }
     check_solves(assembled.get_model(), matrix_free.get_model());
@@ -146,8 +118,16 @@ TEST_CASE("particle models' free block is symmetric positive definite and CG "
           "solves with it",
           "[solvers][unit]")
 {
-  check_diffusion<2>(1. / 32);
-  check_diffusion<3>(1. / 16);
-  check_elasticity<2>(1. / 32);
-  check_elasticity<3>(1. / 16);
+  check("2D diffusion",
+        *layout_diffusion<2>(1. / 32, 3, false),
+        *layout_diffusion<2>(1. / 32, 3, true));
+  check("3D diffusion",
+        *layout_diffusion<3>(1. / 16, 3, false),
+        *layout_diffusion<3>(1. / 16, 3, true));
+  check("2D LPS",
+        *cracked_lps<2>(1. / 32, 2, false),
+        *cracked_lps<2>(1. / 32, 2, true));
+  check("3D LPS",
+        *cracked_lps<3>(1. / 16, 2, false),
+        *cracked_lps<3>(1. / 16, 2, true));
 }

@@ -7,8 +7,6 @@
 // on any number of ranks.
 
 #include <ltn/nonlocal/lattice_operator.h>
-#include <ltn/nonlocal/particle_diffusion.h>
-#include <ltn/nonlocal/particle_elasticity.h>
 
 #include <catch2/catch.hpp>
 
@@ -65,35 +63,25 @@ namespace
   void
   check_elasticity(const double h, const double m)
   {
-    const Geometry<dim> geometry = particle_layout<dim>();
-    // An inner crack and one across the whole lattice.
-    const std::vector<Crack<dim>> cracks = {crack_at<dim>(0.5 + h / 2, 0.1),
-                                            crack_at<dim>(1 - h / 2, 10)};
-    const Kernel                  influence("constant", 0.5, dim, m * h);
-    ParticleElasticity<dim>       assembled(
-      geometry, influence, h, 1.3, 0.7, cracks, MPI_COMM_WORLD);
-    ParticleElasticity<dim> matrix_free(
-      geometry, influence, h, 1.3, 0.7, cracks, MPI_COMM_WORLD);
-    const Functions::ConstantFunction<dim> load(1., dim);
-    assembled.assemble(load, load, false);
-    matrix_free.assemble(load, load, true);
+    const auto   assembled   = cracked_lps<dim>(h, m, false);
+    const auto   matrix_free = cracked_lps<dim>(h, m, true);
     const double difference =
-      product_difference(assembled.get_model(), matrix_free.get_model());
+      product_difference(assembled->get_model(), matrix_free->get_model());
     const auto &op = dynamic_cast<const LatticeOperator<dim> &>(
-      *matrix_free.get_model().matrix_free);
-    const auto n = matrix_free.get_lattice().n_particles();
+      *matrix_free->get_model().matrix_free);
+    const auto n = matrix_free->get_lattice().n_particles();
     INFO(dim << "D LPS, m = " << m << ": " << op.n_stored_rows() << " of " << n
              << " rows stored, difference " << difference);
     CHECK(difference < 1e-13);
     for (const RowSubset rows : {RowSubset::kept, RowSubset::eliminated})
-      CHECK(product_difference(assembled.get_model(),
-                               matrix_free.get_model(),
+      CHECK(product_difference(assembled->get_model(),
+                               matrix_free->get_model(),
                                rows) < 1e-13);
     // The shared stencil serves most particles, not all.
     CHECK(op.n_stored_rows() > 0);
     CHECK(op.n_stored_rows() < (dim + 1) * n);
-    auto rhs_difference = assembled.get_model().rhs;
-    rhs_difference -= matrix_free.get_model().rhs;
+    auto rhs_difference = assembled->get_model().rhs;
+    rhs_difference -= matrix_free->get_model().rhs;
     CHECK(rhs_difference.linfty_norm() == 0);
   }
 
@@ -101,15 +89,10 @@ namespace
   void
   check_diffusion(const double h, const double m)
   {
-    const Geometry<dim>    geometry = particle_layout<dim>();
-    const Kernel           kernel("constant", 0.5, dim, m * h);
-    ParticleDiffusion<dim> assembled(geometry, kernel, h, MPI_COMM_WORLD);
-    ParticleDiffusion<dim> matrix_free(geometry, kernel, h, MPI_COMM_WORLD);
-    const Functions::ConstantFunction<dim> data(1.);
-    assembled.assemble(data, data, false);
-    matrix_free.assemble(data, data, true);
+    const auto   assembled   = layout_diffusion<dim>(h, m, false);
+    const auto   matrix_free = layout_diffusion<dim>(h, m, true);
     const double difference =
-      product_difference(assembled.get_model(), matrix_free.get_model());
+      product_difference(assembled->get_model(), matrix_free->get_model());
     INFO(dim << "D diffusion, m = " << m << ": difference " << difference);
     CHECK(difference < 1e-13);
   }

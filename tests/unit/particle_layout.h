@@ -3,12 +3,16 @@
 // The particle layout shared by the unit tests of the particle operators: the
 // body (0,2)x(0,1)^(dim-1) and Omega_n = (0,1.25)x(0.25,0.75)^(dim-1), so the
 // collar at x < 0 lies outside the body (volume constraint) and the rest
-// inside it (controls); cracks placed by crack_at(); random vectors.
+// inside it (controls); cracks placed by crack_at(); the particle models on
+// it; random vectors.
 
 #include <ltn/base/discrete_model.h>
+#include <ltn/nonlocal/particle_diffusion.h>
+#include <ltn/nonlocal/particle_elasticity.h>
 #include <ltn/scene/crack.h>
 #include <ltn/scene/geometry.h>
 
+#include <memory>
 #include <random>
 
 template <int dim>
@@ -39,6 +43,48 @@ crack_at(const double x, const double half_width)
         crack.corners[k][d] = (k == d) ? 0.5 + half_width : 0.5 - half_width;
     }
   return crack;
+}
+
+/**
+ * LPS on the layout (constant kernel, eps = @p m h, lambda 1.3, mu 0.7) with
+ * an inner crack and one across the whole lattice, loaded by 1 in every
+ * component, assembled or @p matrix_free.
+ */
+template <int dim>
+std::unique_ptr<ltn::ParticleElasticity<dim>>
+cracked_lps(const double h, const double m, const bool matrix_free)
+{
+  const std::vector<ltn::Crack<dim>> cracks = {crack_at<dim>(0.5 + h / 2, 0.1),
+                                               crack_at<dim>(1 - h / 2, 10)};
+  auto particles = std::make_unique<ltn::ParticleElasticity<dim>>(
+    particle_layout<dim>(),
+    ltn::Kernel("constant", 0.5, dim, m * h),
+    h,
+    1.3,
+    0.7,
+    cracks,
+    MPI_COMM_WORLD);
+  const dealii::Functions::ConstantFunction<dim> load(1., dim);
+  particles->assemble(load, load, matrix_free);
+  return particles;
+}
+
+/**
+ * Nonlocal diffusion on the layout (constant kernel, eps = @p m h), data 1,
+ * assembled or @p matrix_free.
+ */
+template <int dim>
+std::unique_ptr<ltn::ParticleDiffusion<dim>>
+layout_diffusion(const double h, const double m, const bool matrix_free)
+{
+  auto particles = std::make_unique<ltn::ParticleDiffusion<dim>>(
+    particle_layout<dim>(),
+    ltn::Kernel("constant", 0.5, dim, m * h),
+    h,
+    MPI_COMM_WORLD);
+  const dealii::Functions::ConstantFunction<dim> data(1.);
+  particles->assemble(data, data, matrix_free);
+  return particles;
 }
 
 /** Values uniform in [-1, 1] at every owned degree of freedom. */
