@@ -71,8 +71,10 @@ namespace ltn
 
 
   template <int dim>
-  CouplingSolution
-  solve_full_space_direct(const CouplingSystem<dim> &system)
+  void
+  assemble_full_space_system(const CouplingSystem<dim>      &system,
+                             TrilinosWrappers::SparseMatrix &K,
+                             TrilinosWrappers::MPI::Vector  &b)
   {
     using index                    = types::global_dof_index;
     const DiscreteModel       &n_m = *system.models[nonlocal_model];
@@ -115,8 +117,8 @@ namespace ltn
       [](index, double) {});
     sparsity.compress();
 
-    TrilinosWrappers::SparseMatrix K(sparsity);
-    TrilinosWrappers::MPI::Vector  b(owned, comm);
+    K.reinit(sparsity);
+    b.reinit(owned, comm);
     for_each_entry(
       system,
       x_offset,
@@ -127,6 +129,22 @@ namespace ltn
       [&](const index row, const double value) { b(row) = value; });
     K.compress(VectorOperation::add);
     b.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim>
+  CouplingSolution
+  solve_full_space_direct(const CouplingSystem<dim> &system)
+  {
+    using index = types::global_dof_index;
+    TrilinosWrappers::SparseMatrix K;
+    TrilinosWrappers::MPI::Vector  b;
+    assemble_full_space_system(system, K, b);
+    const IndexSet &owned = b.locally_owned_elements();
+    const MPI_Comm  comm  = system.communicator();
+    const index     N_n   = system.models[nonlocal_model]->owned.size();
+    const std::array<index, 2> x_offset = {{0, N_n}};
 
     // MUMPS's default pivot threshold 0.01 keeps the factors sparse (the
     // 3D LPS system: 42 s against 120 s at 0.5), but on some saddle-point
@@ -180,6 +198,18 @@ namespace ltn
     return solution;
   }
 
+  template void
+  assemble_full_space_system(const CouplingSystem<1> &,
+                             TrilinosWrappers::SparseMatrix &,
+                             TrilinosWrappers::MPI::Vector &);
+  template void
+  assemble_full_space_system(const CouplingSystem<2> &,
+                             TrilinosWrappers::SparseMatrix &,
+                             TrilinosWrappers::MPI::Vector &);
+  template void
+  assemble_full_space_system(const CouplingSystem<3> &,
+                             TrilinosWrappers::SparseMatrix &,
+                             TrilinosWrappers::MPI::Vector &);
   template CouplingSolution
   solve_full_space_direct(const CouplingSystem<1> &);
   template CouplingSolution

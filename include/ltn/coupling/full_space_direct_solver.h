@@ -27,4 +27,17 @@ namespace ltn
   template <int dim>
   CouplingSolution
   solve_full_space_direct(const CouplingSystem<dim> &system);
+
+  /**
+   * The matrix `K` and right-hand side `b` of the system above, assembled:
+   * each rank's rows those of its models' owned degrees of freedom, in the
+   * numbering `[u_n | u_l | mu_n | mu_l]` (offsets 0, `N_n`, `N_n + N_l`,
+   * `2 N_n + N_l`, with `N_k` model `k`'s number of degrees of freedom).
+   * The models must be assembled (not matrix-free).
+   */
+  template <int dim>
+  void
+  assemble_full_space_system(const CouplingSystem<dim>      &system,
+                             TrilinosWrappers::SparseMatrix &K,
+                             TrilinosWrappers::MPI::Vector  &b);
 } // namespace ltn

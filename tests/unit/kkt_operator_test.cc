@@ -1,0 +1,143 @@
+// The full-space optimality system without a matrix (KktOperator,
+// doc/discretization.md section 18) is the assembled system of section 9
+// with the multipliers scaled: K_s = diag(I, sI) K diag(I, sI), and its
+// right-hand side diag(I, sI) b. Checked on random vectors for 2D nonlocal
+// diffusion on the shared particle layout coupled to Poisson, with the
+// particle operator assembled and matrix-free, Tikhonov term on.
+
+#include <deal.II/base/function.h>
+
+#include <ltn/coupling/full_space_direct_solver.h>
+#include <ltn/coupling/kkt_operator.h>
+#include <ltn/coupling/overlap_quadrature.h>
+#include <ltn/local/poisson_problem.h>
+
+#include <catch2/catch.hpp>
+
+#include "particle_layout.h"
+
+using namespace ltn;
+
+namespace
+{
+  /** The entries of the blocks of @p v at their offsets in one vector. */
+  TrilinosWrappers::MPI::Vector
+  flatten(const TrilinosWrappers::MPI::BlockVector &v, const IndexSet &owned)
+  {
+    TrilinosWrappers::MPI::Vector flat(owned, MPI_COMM_WORLD);
+    types::global_dof_index       offset = 0;
+    for (unsigned int b = 0; b < v.n_blocks(); ++b)
+      {
+        for (const auto i : v.block(b).locally_owned_elements())
+          flat(offset + i) = v.block(b)(i);
+        offset += v.block(b).size();
+      }
+    flat.compress(VectorOperation::insert);
+    return flat;
+  }
+
+  /** The inverse of flatten(): the entries of @p flat into @p v's blocks. */
+  void
+  unflatten(const TrilinosWrappers::MPI::Vector &flat,
+            TrilinosWrappers::MPI::BlockVector  &v)
+  {
+    types::global_dof_index offset = 0;
+    for (unsigned int b = 0; b < v.n_blocks(); ++b)
+      {
+        for (const auto i : v.block(b).locally_owned_elements())
+          v.block(b)(i) = flat(offset + i);
+        v.block(b).compress(VectorOperation::insert);
+        offset += v.block(b).size();
+      }
+  }
+} // namespace
+
+
+
+TEST_CASE("the KKT operator is the assembled optimality system with scaled "
+          "multipliers",
+          "[coupling]")
+{
+  constexpr int       dim      = 2;
+  const Geometry<dim> geometry = particle_layout<dim>();
+  const double        h = 0.125, spacing = h / 4, m = 2, alpha = 0.3;
+
+  LocalParameters<dim> parameters;
+  parameters.dirichlet_faces = {0, 2};
+  PoissonProblem<dim> local(geometry, parameters, h, MPI_COMM_WORLD);
+  const Functions::ConstantFunction<dim> one(1.), flux(0.5, dim);
+  local.assemble(one, one, flux);
+
+  std::mt19937 random(7);
+  for (const bool matrix_free : {false, true})
+    {
+      // The assembled twin gives K; the operator works on the model as the
+      // solvers see it.
+      const auto assembled = layout_diffusion<dim>(spacing, m, false);
+      const auto particles = layout_diffusion<dim>(spacing, m, matrix_free);
+      const auto overlap   = create_overlap_quadrature(geometry,
+                                                     m * spacing,
+                                                     *particles,
+                                                     local.get_dof_handler());
+      const CouplingSystem<dim>      reference(assembled->get_model(),
+                                          local.get_model(),
+                                          overlap,
+                                          alpha);
+      const CouplingSystem<dim>      system(particles->get_model(),
+                                       local.get_model(),
+                                       overlap,
+                                       alpha);
+      TrilinosWrappers::SparseMatrix K;
+      TrilinosWrappers::MPI::Vector  b;
+      assemble_full_space_system(reference, K, b);
+
+      const KktOperator<dim> kkt(system);
+      const double           s = kkt.scale;
+      INFO((matrix_free ? "matrix-free" : "assembled") << ", scale " << s);
+      REQUIRE(s > 0);
+
+      // z = [x | mu'], K_s z against diag(I, sI) K [x | s mu'].
+      auto z = kkt.new_vector();
+      for (const unsigned int k : {0u, 1u})
+        {
+          const DiscreteModel &model = *system.models[k];
+          z.block(k)                 = random_vector(model, random);
+          z.block(2 + k)             = random_vector(model, random);
+        }
+      auto y = kkt.new_vector();
+      kkt.vmult(y, z);
+
+      auto z_scaled = z;
+      auto y_scaled = y;
+      for (const unsigned int k : {0u, 1u})
+        {
+          z_scaled.block(2 + k) *= s;
+          y_scaled.block(2 + k) /= s;
+        }
+      const IndexSet                owned = b.locally_owned_elements();
+      TrilinosWrappers::MPI::Vector Kz(owned, MPI_COMM_WORLD);
+      K.vmult(Kz, flatten(z_scaled, owned));
+      // Block by block: the optimality rows are of the size of the overlap
+      // weights, the constraint rows of the models' matrices.
+      auto expected = kkt.new_vector();
+      unflatten(Kz, expected);
+      for (unsigned int block = 0; block < 4; ++block)
+        {
+          INFO("block " << block);
+          auto difference = y_scaled.block(block);
+          difference -= expected.block(block);
+          CHECK(expected.block(block).l2_norm() > 0);
+          CHECK(difference.l2_norm() <=
+                1e-12 * expected.block(block).l2_norm());
+        }
+
+      // The right-hand side: [0 | s r].
+      auto rhs = kkt.rhs();
+      for (const unsigned int k : {0u, 1u})
+        rhs.block(2 + k) /= s;
+      TrilinosWrappers::MPI::Vector rhs_difference = flatten(rhs, owned);
+      rhs_difference -= b;
+      CHECK(rhs_difference.l2_norm() <= 1e-14 * b.l2_norm());
+      CHECK(b.l2_norm() > 0);
+    }
+}
