@@ -68,29 +68,33 @@ TEST_CASE("the KKT operator is the assembled optimality system with scaled "
   const Functions::ConstantFunction<dim> one(1.), flux(0.5, dim);
   local.assemble(one, one, flux);
 
+  // The assembled model gives K (and the overlap: the lattice is the same);
+  // the operator works on the model as the solvers see it.
+  const auto assembled = layout_diffusion<dim>(spacing, m, false);
+  const auto overlap   = create_overlap_quadrature(geometry,
+                                                 m * spacing,
+                                                 *assembled,
+                                                 local.get_dof_handler());
+  const CouplingSystem<dim>      reference(assembled->get_model(),
+                                      local.get_model(),
+                                      overlap,
+                                      alpha);
+  TrilinosWrappers::SparseMatrix K;
+  TrilinosWrappers::MPI::Vector  b;
+  assemble_full_space_system(reference, K, b);
+  const IndexSet owned = b.locally_owned_elements();
+
   std::mt19937 random(7);
   for (const bool matrix_free : {false, true})
     {
-      // The assembled twin gives K; the operator works on the model as the
-      // solvers see it.
-      const auto assembled = layout_diffusion<dim>(spacing, m, false);
-      const auto particles = layout_diffusion<dim>(spacing, m, matrix_free);
-      const auto overlap   = create_overlap_quadrature(geometry,
-                                                     m * spacing,
-                                                     *particles,
-                                                     local.get_dof_handler());
-      const CouplingSystem<dim>      reference(assembled->get_model(),
-                                          local.get_model(),
-                                          overlap,
-                                          alpha);
-      const CouplingSystem<dim>      system(particles->get_model(),
+      const auto matrix_free_model =
+        matrix_free ? layout_diffusion<dim>(spacing, m, true) : nullptr;
+      const CouplingSystem<dim> system(matrix_free ?
+                                         matrix_free_model->get_model() :
+                                         assembled->get_model(),
                                        local.get_model(),
                                        overlap,
                                        alpha);
-      TrilinosWrappers::SparseMatrix K;
-      TrilinosWrappers::MPI::Vector  b;
-      assemble_full_space_system(reference, K, b);
-
       const KktOperator<dim> kkt(system);
       const double           s = kkt.scale;
       INFO((matrix_free ? "matrix-free" : "assembled") << ", scale " << s);
@@ -114,7 +118,6 @@ TEST_CASE("the KKT operator is the assembled optimality system with scaled "
           z_scaled.block(2 + k) *= s;
           y_scaled.block(2 + k) /= s;
         }
-      const IndexSet                owned = b.locally_owned_elements();
       TrilinosWrappers::MPI::Vector Kz(owned, MPI_COMM_WORLD);
       K.vmult(Kz, flatten(z_scaled, owned));
       // Block by block: the optimality rows are of the size of the overlap
