@@ -57,6 +57,10 @@ namespace ltn
                                  report.str()));
           if (numeric == 0)
             return;
+          if (mumps != nullptr && mumps->GetINFOG()[0] == -10)
+            throw SingularFactorization(
+              "the matrix is singular: the numeric factorization failed: " +
+              report.str());
           AssertThrow(mumps != nullptr && mumps->GetINFOG()[0] == -9 &&
                         extra_workspace < 1600,
                       ExcMessage("the matrix is singular: the numeric "

@@ -3,6 +3,9 @@
 #include <ltn/coupling/direct_solver.h>
 #include <ltn/coupling/full_space_direct_solver.h>
 
+#include <array>
+#include <memory>
+
 namespace ltn
 {
   namespace
@@ -150,15 +153,30 @@ namespace ltn
     // 3D LPS system: 42 s against 120 s at 0.5), but on some saddle-point
     // systems (1D at eps/h = 1.5 and 2) it leaves relative residuals of
     // 1e-3 to 25 that iterative refinement cannot repair; 0.5 solves those
-    // to round-off. Take the first that reaches 1e-11.
+    // to round-off; on others MUMPS finds a pivot below 0.01 too small and
+    // stops (1D at eps/h = 1.5 on an AMD EPYC's OpenBLAS). Take the first
+    // that reaches 1e-11.
     const double                  b_norm = std::max(b.l2_norm(), 1e-300);
     TrilinosWrappers::MPI::Vector z(owned, comm), residual(owned, comm),
       correction(owned, comm);
-    double       relative_residual = 0;
-    unsigned int refinements       = 0;
-    for (const double pivot_threshold : {0.01, 0.5})
+    double                      relative_residual = 0;
+    unsigned int                refinements       = 0;
+    const std::array<double, 2> pivot_thresholds  = {{0.01, 0.5}};
+    for (const double pivot_threshold : pivot_thresholds)
       {
-        const DirectSolver direct(K, false, pivot_threshold);
+        std::unique_ptr<const DirectSolver> factored;
+        try
+          {
+            factored =
+              std::make_unique<const DirectSolver>(K, false, pivot_threshold);
+          }
+        catch (const SingularFactorization &)
+          {
+            if (pivot_threshold == pivot_thresholds.back())
+              throw;
+            continue;
+          }
+        const DirectSolver &direct = *factored;
         direct.solve(z, b);
         relative_residual = K.residual(residual, z, b) / b_norm;
         refinements       = 0;

@@ -4,6 +4,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
+#include <stdexcept>
 
 class Amesos_BaseSolver;
 class Epetra_LinearProblem;
@@ -15,6 +16,16 @@ namespace EpetraExt
 namespace ltn
 {
   using namespace dealii;
+
+  /**
+   * Thrown by DirectSolver when MUMPS finds the matrix numerically singular
+   * (INFOG(1) = -10): with a small pivot threshold that can be round-off,
+   * and a larger threshold may still factor it.
+   */
+  struct SingularFactorization : std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
 
   /**
    * A sparse direct solver for a distributed Trilinos matrix, through Amesos:
@@ -29,7 +40,8 @@ namespace ltn
     /**
      * Factorize @p matrix, and with @p with_transpose its transpose, with
      * MUMPS's relative pivot threshold @p pivot_threshold (a pivot must be
-     * at least this fraction of the largest entry of its column).
+     * at least this fraction of the largest entry of its column). Throws
+     * SingularFactorization if MUMPS finds the matrix numerically singular.
      */
     DirectSolver(const TrilinosWrappers::SparseMatrix &matrix,
                  const bool                            with_transpose,
