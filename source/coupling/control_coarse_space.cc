@@ -92,12 +92,13 @@ namespace ltn
 
   template <int dim>
   std::vector<TrilinosWrappers::MPI::BlockVector>
-  polynomial_control_fields(const ReducedHessian<dim> &hessian,
-                            const unsigned int         degree)
+  polynomial_control_fields(const ReducedHessian<dim>       &hessian,
+                            const unsigned int               degree,
+                            const std::vector<unsigned int> &models)
   {
     std::vector<TrilinosWrappers::MPI::BlockVector> Z;
     const MPI_Comm communicator = hessian.system.communicator();
-    for (const unsigned int k : {0u, 1u})
+    for (const unsigned int k : models)
       {
         const DiscreteModel  &model = *hessian.system.models[k];
         const auto           &x     = model.control_positions;
@@ -161,10 +162,32 @@ namespace ltn
     return Z;
   }
 
-  template std::vector<TrilinosWrappers::MPI::BlockVector>
-  polynomial_control_fields(const ReducedHessian<1> &, unsigned int);
-  template std::vector<TrilinosWrappers::MPI::BlockVector>
-  polynomial_control_fields(const ReducedHessian<2> &, unsigned int);
-  template std::vector<TrilinosWrappers::MPI::BlockVector>
-  polynomial_control_fields(const ReducedHessian<3> &, unsigned int);
+  template <int dim>
+  std::vector<TrilinosWrappers::MPI::BlockVector>
+  unit_control_fields(const ReducedHessian<dim> &hessian, const unsigned int k)
+  {
+    std::vector<TrilinosWrappers::MPI::BlockVector> Z;
+    const unsigned int n = hessian.solvers[k]->new_control_vector().size();
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        auto z = hessian.new_control_vector();
+        if (z.block(k).in_local_range(j))
+          z.block(k)(j) = 1.;
+        z.compress(VectorOperation::insert);
+        Z.push_back(z);
+      }
+    return Z;
+  }
+
+#define LTN_INSTANTIATE(dim)                                    \
+  template std::vector<TrilinosWrappers::MPI::BlockVector>      \
+  polynomial_control_fields(const ReducedHessian<dim> &,        \
+                            unsigned int,                       \
+                            const std::vector<unsigned int> &); \
+  template std::vector<TrilinosWrappers::MPI::BlockVector>      \
+  unit_control_fields(const ReducedHessian<dim> &, unsigned int);
+  LTN_INSTANTIATE(1)
+  LTN_INSTANTIATE(2)
+  LTN_INSTANTIATE(3)
+#undef LTN_INSTANTIATE
 } // namespace ltn

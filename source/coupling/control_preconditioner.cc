@@ -9,7 +9,8 @@ namespace ltn
   template <int dim>
   ControlPreconditioner<dim>::ControlPreconditioner(
     const ReducedHessian<dim>        &hessian,
-    const std::optional<unsigned int> coarse_degree)
+    const std::optional<unsigned int> coarse_degree,
+    const bool                        with_local_block)
   {
     const ModelSolver &nonlocal = *hessian.solvers[nonlocal_model];
     nonlocal_diagonal           = nonlocal.restrict_to_controls(
@@ -34,8 +35,9 @@ namespace ltn
     // held one value per point and control: 170 MB of the 700 MB peak of
     // the 1.1e5-particle bar (78 local controls).
     const ModelSolver &local = *hessian.solvers[local_model];
-    const unsigned int n     = local.new_control_vector().size();
-    const auto         zero_nonlocal =
+    const unsigned int n =
+      with_local_block ? local.new_control_vector().size() : 0;
+    const auto zero_nonlocal =
       hessian.system.models[nonlocal_model]->new_vector();
     std::vector<TrilinosWrappers::MPI::Vector> fields(n), observed(n);
     TrilinosWrappers::MPI::Vector              unused;
@@ -74,7 +76,9 @@ namespace ltn
     // iterations instead of 43 (1e-6: 59), worse than one level (59).
     if (coarse_degree)
       coarse = std::make_unique<const ControlCoarseSpace>(
-        polynomial_control_fields(hessian, *coarse_degree),
+        polynomial_control_fields(hessian,
+                                  *coarse_degree,
+                                  {nonlocal_model, local_model}),
         [&](BlockVectorType &dst, const BlockVectorType &src) {
           hessian.vmult(dst, src);
         });
@@ -111,7 +115,10 @@ namespace ltn
     dst.block(nonlocal_model).compress(VectorOperation::insert);
 
     if (local_block.m() == 0)
-      return;
+      {
+        dst.block(local_model) = src.block(local_model);
+        return;
+      }
     // All local controls on every rank (deal.II gathers the vector).
     Vector<double> local(src.block(local_model));
     local_block.solve(local);

@@ -1,11 +1,11 @@
 #include <deal.II/base/timer.h>
 
-#include <deal.II/lac/precondition.h>
-#include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <ltn/coupling/control_coarse_space.h>
 #include <ltn/coupling/control_preconditioner.h>
+#include <ltn/coupling/deflated_cg.h>
 #include <ltn/coupling/model_solver.h>
 #include <ltn/coupling/no_convergence.h>
 #include <ltn/coupling/reduced_hessian.h>
@@ -13,12 +13,14 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 
 namespace ltn
 {
   namespace
   {
     using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
+    using VectorType      = TrilinosWrappers::MPI::Vector;
 
     /** The loosest tolerance a relaxed inner solve is given. */
     constexpr double loosest_model_tolerance = 1e-1;
@@ -52,13 +54,10 @@ namespace ltn
     const double     rhs_norm = rhs.l2_norm();
     if (rhs_norm > 0)
       {
-        ReductionControl control(max_iterations, 0., relative_tolerance);
-        SolverCG<BlockVectorType> cg(control);
+        SolverControl control(max_iterations, relative_tolerance * rhs_norm);
         // Relaxed inner solves (doc/discretization.md, section 19): the
         // error of the Hessian's products may grow as the residual falls.
-        cg.connect([&](const unsigned int,
-                       const double residual,
-                       const BlockVectorType &) {
+        const auto relax = [&](const double residual) {
           const double relaxed =
             model_solvers.relative_tolerance * rhs_norm /
             std::max(residual, std::numeric_limits<double>::min());
@@ -68,23 +67,73 @@ namespace ltn
                          model_solvers.relative_tolerance,
                          std::max(loosest_model_tolerance,
                                   model_solvers.relative_tolerance)));
-          return SolverControl::success;
-        });
+        };
+        const NormalEquations equations{
+          [&](const unsigned int k, const VectorType &controls) {
+            return hessian.solvers[k]->forward(controls, false);
+          },
+          [&](const NormalEquations::States &u) {
+            return system.mismatch(u[0], u[1]);
+          },
+          [&](const std::vector<double> &d) {
+            NormalEquations::States gradient;
+            system.mismatch_gradient(d, gradient[0], gradient[1]);
+            return gradient;
+          },
+          [&](const NormalEquations::States &gradient) {
+            BlockVectorType g(2);
+            for (const unsigned int k : {0u, 1u})
+              g.block(k) = hessian.solvers[k]->adjoint(gradient[k]);
+            g.collect_sizes();
+            return g;
+          },
+          [&](const unsigned int k) { return system.models[k]->new_vector(); },
+          system.alpha};
         try
           {
+            Timer setup_timer;
+            // Two levels (doc/discretization.md, section 19): deflation by
+            // the nonlocal controls' polynomial fields and by every local
+            // control, which makes the CG one on the nonlocal controls'
+            // Schur complement, preconditioned by D_n; one level: P alone.
+            const bool two_level = controls.enabled && controls.coarse_degree;
+            std::unique_ptr<const ControlPreconditioner<dim>> preconditioner;
             if (controls.enabled)
+              preconditioner =
+                std::make_unique<ControlPreconditioner<dim>>(hessian,
+                                                             std::nullopt,
+                                                             !two_level);
+            std::vector<BlockVectorType> Z;
+            if (two_level)
               {
-                Timer                            setup_timer;
-                const ControlPreconditioner<dim> preconditioner(
-                  hessian, controls.coarse_degree);
-                solution.preconditioner_setup_seconds = setup_timer.wall_time();
-                solution.explicit_controls =
-                  preconditioner.n_explicit_controls();
-                solution.coarse_modes = preconditioner.n_coarse_modes();
-                cg.solve(hessian, theta, rhs, preconditioner);
+                Z = polynomial_control_fields(hessian,
+                                              *controls.coarse_degree,
+                                              {nonlocal_model});
+                for (auto &z : unit_control_fields(hessian, local_model))
+                  Z.push_back(std::move(z));
               }
-            else
-              cg.solve(hessian, theta, rhs, PreconditionIdentity());
+            // The coarse states need the model solvers' full tolerance: for
+            // the fields both models share, F z is a small difference of
+            // two states.
+            const DeflationSpace coarse(std::move(Z), equations);
+            solution.preconditioner_setup_seconds = setup_timer.wall_time();
+            if (preconditioner)
+              solution.explicit_controls =
+                preconditioner->n_explicit_controls();
+            solution.coarse_modes = coarse.size();
+            solve_deflated_cg(
+              equations,
+              coarse,
+              [&](BlockVectorType &dst, const BlockVectorType &src) {
+                if (preconditioner)
+                  preconditioner->vmult(dst, src);
+                else
+                  dst = src;
+              },
+              rhs,
+              theta,
+              control,
+              relax);
           }
         catch (const SolverControl::NoConvergence &)
           {

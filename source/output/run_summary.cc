@@ -52,7 +52,7 @@ namespace ltn
       j["solver"]["method"]     = level.solver_method;
       j["solver"]["iterations"] = level.iterations;
       j["solver"]["residual"]   = level.residual;
-      if (level.explicit_controls > 0)
+      if (level.explicit_controls > 0 || level.coarse_modes > 0)
         {
           JsonValue &preconditioner = j["solver"]["control preconditioner"];
           preconditioner["explicit controls"] = level.explicit_controls;

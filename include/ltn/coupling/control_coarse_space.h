@@ -61,15 +61,21 @@ namespace ltn
   };
 
   /**
-   * The coarse modes of the two-level control preconditioner: per model and
-   * per component of its field, the monomials of total degree up to
-   * @p degree at its controls (coordinates centred and scaled to [-1, 1]
-   * over that model's controls), orthonormalized. The slowest modes of the
-   * block-diagonally preconditioned Hessian are such smooth fields, which
-   * both models represent and the overlap barely tells apart.
+   * The coarse modes of the two-level control preconditioner: per model in
+   * @p models and per component of its field, the monomials of total degree
+   * up to @p degree at its controls (coordinates centred and scaled to
+   * [-1, 1] over that model's controls), orthonormalized. The slowest modes
+   * of the block-diagonally preconditioned Hessian are such smooth fields,
+   * which both models represent and the overlap barely tells apart.
    */
   template <int dim>
   std::vector<TrilinosWrappers::MPI::BlockVector>
-  polynomial_control_fields(const ReducedHessian<dim> &hessian,
-                            const unsigned int         degree);
+  polynomial_control_fields(const ReducedHessian<dim>       &hessian,
+                            const unsigned int               degree,
+                            const std::vector<unsigned int> &models);
+
+  /** One unit vector per control of model @p k. */
+  template <int dim>
+  std::vector<TrilinosWrappers::MPI::BlockVector>
+  unit_control_fields(const ReducedHessian<dim> &hessian, const unsigned int k);
 } // namespace ltn

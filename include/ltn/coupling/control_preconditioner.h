@@ -50,10 +50,16 @@ namespace ltn
 
     /**
      * With @p coarse_degree, a second level: the ControlCoarseSpace of
-     * polynomials up to that degree, and `P` inside its balancing.
+     * polynomials up to that degree, and `P` inside its balancing (the
+     * full-space GMRES's elimination; the reduced-space CG deflates by
+     * those polynomials instead, and takes `P` alone). Without
+     * @p with_local_block, `P` is the identity on the local controls: the
+     * reduced-space CG deflates by every local control, so its residuals
+     * vanish there.
      */
     ControlPreconditioner(const ReducedHessian<dim>        &hessian,
-                          const std::optional<unsigned int> coarse_degree);
+                          const std::optional<unsigned int> coarse_degree,
+                          const bool with_local_block = true);
 
     void
     vmult(BlockVectorType &dst, const BlockVectorType &src) const;

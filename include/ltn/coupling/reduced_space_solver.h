@@ -18,7 +18,9 @@ namespace ltn
    * when the residual has dropped by @p relative_tolerance. The models'
    * solvers are as @p model_solvers say, their tolerance relaxed as the
    * residual falls (doc/discretization.md, section 19). CG is preconditioned
-   * by the ControlPreconditioner that @p controls describes.
+   * by the block-diagonal ControlPreconditioner and, with a coarse degree in
+   * @p controls, deflated by the polynomial control fields (DeflationSpace:
+   * one forward solve per coarse column, no adjoint solve).
    */
   template <int dim>
   CouplingSolution

@@ -1,0 +1,140 @@
+#pragma once
+
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <functional>
+#include <vector>
+
+namespace ltn
+{
+  using namespace dealii;
+
+  /**
+   * Normal equations `(F^T W F + alpha I) x = b` with `F = B V` for the
+   * controls `x = [x_0; x_1]` of two models, as the reduced space has them
+   * (doc/discretization.md, sections 10 and 19): @p forward maps model k's
+   * controls to its state (`V_k`, a forward solve), @p observe takes both
+   * states to an observation (`B`, the overlap mismatch at this rank's
+   * points), @p observe_transpose takes an observation `d` to the states'
+   * gradient `B^T W d`, and @p adjoint maps states' gradients to the
+   * controls' (`V^T`, the adjoint solves).
+   */
+  struct NormalEquations
+  {
+    using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
+    using VectorType      = TrilinosWrappers::MPI::Vector;
+    using States          = std::array<VectorType, 2>;
+    using Observation     = std::vector<double>;
+
+    std::function<VectorType(unsigned int k, const VectorType &)> forward;
+    std::function<Observation(const States &)>                    observe;
+    std::function<States(const Observation &)>     observe_transpose;
+    std::function<BlockVectorType(const States &)> adjoint;
+    /** A zero state of model k. */
+    std::function<VectorType(unsigned int k)> new_state;
+    double                                    alpha;
+
+    /** `F x`: the forward solves of both models, observed. */
+    Observation
+    observe_controls(const BlockVectorType &x) const;
+
+    /** `F^T W d`: the adjoint solves of the observed residual @p d. */
+    BlockVectorType
+    gradient(const Observation &d) const;
+  };
+
+  /**
+   * The coarse space of a deflated CG on NormalEquations
+   * (doc/discretization.md, section 19): columns `Z`, each in the controls
+   * of one model k, their states `V_k z` (one forward solve each, no
+   * adjoint solve), and the Cholesky factor of
+   * `E = Z^T A Z = (B V Z)^T W (B V Z) + alpha Z^T Z`, replicated on every
+   * rank. The states, not their observations, are kept: a column of the
+   * local model costs a vector of the local model's size.
+   */
+  class DeflationSpace
+  {
+  public:
+    using BlockVectorType = NormalEquations::BlockVectorType;
+    using VectorType      = NormalEquations::VectorType;
+    using Observation     = NormalEquations::Observation;
+
+    DeflationSpace(std::vector<BlockVectorType> Z,
+                   const NormalEquations       &equations);
+
+    /** Not copyable: a copied LAPACKFullMatrix forgets its factorization. */
+    DeflationSpace(const DeflationSpace &) = delete;
+    DeflationSpace &
+    operator=(const DeflationSpace &) = delete;
+
+    /** `E^{-1} Z^T b`: the coefficients of the best coarse approximation. */
+    Vector<double>
+    solve(const BlockVectorType &b) const;
+
+    /**
+     * `E^{-1} Z^T A v` for @p v with its observation @p observed (`F v`):
+     * `Z^T A v = (V Z)^T B^T W F v + alpha Z^T v` needs no adjoint solve.
+     */
+    Vector<double>
+    solve_product(const BlockVectorType &v, const Observation &observed) const;
+
+    /** `v += Z c` and `observed += B (V Z) c`. */
+    void
+    add(const Vector<double> &c,
+        BlockVectorType      &v,
+        Observation          &observed) const;
+
+    /** The number of columns. */
+    unsigned int
+    size() const;
+
+  private:
+    /** `E^{-1} y` in place. */
+    void
+    coarse_solve(Vector<double> &y) const;
+
+    const NormalEquations       &equations;
+    std::vector<BlockVectorType> Z;
+    /** Per column: the model whose controls it lies in, and its state. */
+    std::vector<unsigned int> model_of;
+    std::vector<VectorType>   states;
+    LAPACKFullMatrix<double>  coarse_matrix;
+  };
+
+  /**
+   * Deflated preconditioned CG (Saad, Yeung, Erhel and Guyomarc'h 2000) on
+   * @p equations, with the coarse space @p coarse and the preconditioner
+   * @p precondition (`dst = P^{-1} src`, symmetric positive definite): the
+   * iterates start from the coarse solution and move only A-orthogonally to
+   * `Z`. Each iteration costs one product with `F` (of the preconditioned
+   * residual: forward solves) and one with `F^T W` (of the search direction,
+   * whose observation is updated by the same recurrence as the direction:
+   * adjoint solves), as plain CG does; the start costs one product with
+   * `F^T W`. In exact arithmetic the iterates are those of CG with the
+   * balancing preconditioner of ControlCoarseSpace started from the coarse
+   * solution, which needs `A Z`: an adjoint solve per column more.
+   *
+   * @p x is overwritten. The iteration stops as @p control says of the
+   * residual norm `|b - A x|` (in its recursive form); before each
+   * iteration's products, @p before_products is called with that norm (an
+   * outer method relaxes its inner solves with it). Throws
+   * SolverControl::NoConvergence as deal.II's solvers do.
+   */
+  void
+  solve_deflated_cg(
+    const NormalEquations &equations,
+    const DeflationSpace  &coarse,
+    const std::function<void(NormalEquations::BlockVectorType &,
+                             const NormalEquations::BlockVectorType &)>
+                                                    &precondition,
+    const NormalEquations::BlockVectorType          &b,
+    NormalEquations::BlockVectorType                &x,
+    SolverControl                                   &control,
+    const std::function<void(double residual_norm)> &before_products);
+} // namespace ltn

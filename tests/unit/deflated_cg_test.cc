@@ -1,0 +1,389 @@
+// The deflated CG of the reduced-space solver (doc/discretization.md,
+// section 19), on small dense normal equations `(F^T W F + alpha I) x = b`
+// whose slowest modes the coarse columns hold: it solves them, follows CG
+// with the balancing preconditioner (which needs an adjoint solve per
+// column), and needs one forward solve per column and per iteration, one
+// adjoint solve per iteration and one more.
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+
+#include <ltn/coupling/control_coarse_space.h>
+#include <ltn/coupling/deflated_cg.h>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace ltn;
+
+namespace
+{
+  using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
+  using Observation     = NormalEquations::Observation;
+  const std::array<unsigned int, 2> block_sizes = {{200, 40}};
+  const unsigned int                n           = 240;
+  /** Rows of F: a rough diagonal, three smooth rows, seven dense ones. */
+  const unsigned int n_observations = n + 3 + 7;
+
+  BlockVectorType
+  new_vector()
+  {
+    BlockVectorType v(2);
+    for (const unsigned int k : {0u, 1u})
+      v.block(k).reinit(complete_index_set(block_sizes[k]), MPI_COMM_SELF);
+    v.collect_sizes();
+    return v;
+  }
+
+  BlockVectorType
+  from_function(const std::function<double(unsigned int)> &f)
+  {
+    BlockVectorType v = new_vector();
+    for (unsigned int i = 0; i < n; ++i)
+      v(i) = f(i);
+    v.compress(VectorOperation::insert);
+    return v;
+  }
+
+  /**
+   * `F`: `F^T W F` is a rough diagonal plus `10/(1+j) s_j s_j^T` for the
+   * smooth `s_j(i) = cos(j pi i / n)`, j = 0, 1, 2, plus a dense part.
+   */
+  FullMatrix<double>
+  observation_matrix()
+  {
+    FullMatrix<double> F(n_observations, n);
+    for (unsigned int i = 0; i < n; ++i)
+      F(i, i) = std::sqrt(1 + 0.5 * std::sin(1.3 * i) * std::sin(1.3 * i));
+    for (unsigned int j = 0; j < 3; ++j)
+      for (unsigned int l = 0; l < n; ++l)
+        F(n + j, l) = std::sqrt(10. / (1 + j)) * std::cos(j * M_PI * l / n);
+    for (unsigned int r = n + 3; r < n_observations; ++r)
+      for (unsigned int l = 0; l < n; ++l)
+        F(r, l) = 0.3 * std::sin(0.37 * r * l + 0.2);
+    return F;
+  }
+
+  std::vector<double>
+  observation_weights()
+  {
+    std::vector<double> w(n_observations);
+    for (unsigned int q = 0; q < n_observations; ++q)
+      w[q] = 1 + 0.25 * std::cos(q);
+    return w;
+  }
+
+  /**
+   * The coarse columns, each in one block as the reduced space's are: the
+   * smooth vectors s_0, s_1, s_2 on block 0, orthonormalized, and the unit
+   * vectors of block 1. Their span holds the s_j.
+   */
+  std::vector<BlockVectorType>
+  coarse_columns()
+  {
+    std::vector<BlockVectorType> Z;
+    for (unsigned int j = 0; j < 3; ++j)
+      {
+        BlockVectorType z = from_function([j](unsigned int i) {
+          return i < block_sizes[0] ? std::cos(j * M_PI * i / n) : 0.;
+        });
+        for (const auto &q : Z)
+          z.add(-(z * q), q);
+        z /= z.l2_norm();
+        Z.push_back(z);
+      }
+    for (unsigned int i = 0; i < block_sizes[1]; ++i)
+      {
+        BlockVectorType z = new_vector();
+        z.block(1)(i)     = 1.;
+        z.compress(VectorOperation::insert);
+        Z.push_back(z);
+      }
+    return Z;
+  }
+
+  /** Block @p k of @p x, a vector of that block's size. */
+  TrilinosWrappers::MPI::Vector
+  zero_state(const unsigned int k)
+  {
+    return new_vector().block(k);
+  }
+
+  /**
+   * The normal equations of F and W, with the states the controls
+   * themselves (`V = I`, `B = F`), counting the forward and adjoint
+   * "solves".
+   */
+  struct CountedEquations
+  {
+    using States = NormalEquations::States;
+
+    CountedEquations(const double alpha)
+      : F(observation_matrix())
+      , weights(observation_weights())
+      , equations{[this](const unsigned int                   k,
+                         const TrilinosWrappers::MPI::Vector &x) {
+                    ++n_forward[k];
+                    return x;
+                  },
+                  [this](const States &u) {
+                    Observation y(n_observations, 0.);
+                    for (unsigned int q = 0; q < n_observations; ++q)
+                      for (unsigned int l = 0; l < n; ++l)
+                        y[q] += F(q, l) * (l < block_sizes[0] ?
+                                             u[0](l) :
+                                             u[1](l - block_sizes[0]));
+                    return y;
+                  },
+                  [this](const Observation &d) {
+                    States g{{zero_state(0), zero_state(1)}};
+                    for (unsigned int l = 0; l < n; ++l)
+                      {
+                        double sum = 0;
+                        for (unsigned int q = 0; q < n_observations; ++q)
+                          sum += F(q, l) * weights[q] * d[q];
+                        if (l < block_sizes[0])
+                          g[0](l) = sum;
+                        else
+                          g[1](l - block_sizes[0]) = sum;
+                      }
+                    for (auto &v : g)
+                      v.compress(VectorOperation::insert);
+                    return g;
+                  },
+                  [this](const States &g) {
+                    ++n_adjoint;
+                    BlockVectorType x = new_vector();
+                    x.block(0)        = g[0];
+                    x.block(1)        = g[1];
+                    return x;
+                  },
+                  zero_state,
+                  alpha}
+    {}
+
+    /** `F^T W F + alpha I`, dense. */
+    FullMatrix<double>
+    matrix() const
+    {
+      FullMatrix<double> A(n, n);
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int l = 0; l < n; ++l)
+          {
+            for (unsigned int q = 0; q < n_observations; ++q)
+              A(i, l) += F(q, i) * weights[q] * F(q, l);
+            if (i == l)
+              A(i, l) += equations.alpha;
+          }
+      return A;
+    }
+
+    const FullMatrix<double>    F;
+    const std::vector<double>   weights;
+    std::array<unsigned int, 2> n_forward = {{0, 0}};
+    unsigned int                n_adjoint = 0;
+    const NormalEquations       equations;
+  };
+
+  void
+  apply(const FullMatrix<double> &A,
+        BlockVectorType          &dst,
+        const BlockVectorType    &src)
+  {
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        double sum = 0;
+        for (unsigned int l = 0; l < n; ++l)
+          sum += A(i, l) * src(l);
+        dst(i) = sum;
+      }
+    dst.compress(VectorOperation::insert);
+  }
+
+  struct Balanced
+  {
+    void
+    vmult(BlockVectorType &dst, const BlockVectorType &src) const
+    {
+      coarse.balance(dst, src, smooth);
+    }
+    const ControlCoarseSpace          &coarse;
+    const ControlCoarseSpace::Operator smooth;
+  };
+} // namespace
+
+
+
+TEST_CASE("the deflated CG solves the normal equations with the balancing "
+          "preconditioner's iterations and no products with F^T per coarse "
+          "column",
+          "[solvers][unit]")
+{
+  for (const double alpha : {0., 0.3})
+    {
+      INFO("alpha = " << alpha);
+      CountedEquations         counted(alpha);
+      const FullMatrix<double> A      = counted.matrix();
+      const auto               jacobi = [&](BlockVectorType       &dst,
+                              const BlockVectorType &src) {
+        for (unsigned int i = 0; i < n; ++i)
+          dst(i) = src(i) / A(i, i);
+        dst.compress(VectorOperation::insert);
+      };
+      const BlockVectorType b = from_function(
+        [](unsigned int i) { return 1 + std::sin(0.9 * i) + 0.01 * i; });
+
+      // The exact solution, by LAPACK.
+      LAPACKFullMatrix<double> lu(n, n);
+      lu = A;
+      lu.compute_lu_factorization();
+      Vector<double> exact(n);
+      for (unsigned int i = 0; i < n; ++i)
+        exact(i) = b(i);
+      lu.solve(exact);
+
+      const DeflationSpace coarse(coarse_columns(), counted.equations);
+      const unsigned int   m = 3 + block_sizes[1];
+      REQUIRE(coarse.size() == m);
+      // One forward solve of its own model per column, no adjoint solve.
+      CHECK(counted.n_forward[0] == 3);
+      CHECK(counted.n_forward[1] == block_sizes[1]);
+      CHECK(counted.n_adjoint == 0);
+
+      BlockVectorType x         = new_vector();
+      unsigned int    callbacks = 0;
+      SolverControl   control(100, 1e-12 * b.l2_norm());
+      solve_deflated_cg(
+        counted.equations, coarse, jacobi, b, x, control, [&](double) {
+          ++callbacks;
+        });
+      double error = 0, norm = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          error = std::max(error, std::abs(x(i) - exact(i)));
+          norm  = std::max(norm, std::abs(exact(i)));
+        }
+      CHECK(error < 1e-10 * norm);
+      const unsigned int iterations = control.last_step();
+      CHECK(counted.n_adjoint == iterations + 1);
+      CHECK(counted.n_forward[0] == 3 + iterations);
+      CHECK(counted.n_forward[1] == block_sizes[1] + iterations);
+      CHECK(callbacks == iterations);
+
+      // CG with the balancing preconditioner, from the same start Z E^{-1}
+      // Z^T b: A Z costs a product with F^T W per column; the iterates are
+      // the same in exact arithmetic.
+      const ControlCoarseSpace balancing(coarse_columns(),
+                                         [&](BlockVectorType       &dst,
+                                             const BlockVectorType &src) {
+                                           apply(A, dst, src);
+                                         });
+      BlockVectorType          y = new_vector();
+      Observation              observed_start(n_observations, 0.);
+      coarse.add(coarse.solve(b), y, observed_start);
+      SolverControl             balanced_control(100, 1e-12 * b.l2_norm());
+      SolverCG<BlockVectorType> cg(balanced_control);
+      struct DenseOperator
+      {
+        void
+        vmult(BlockVectorType &dst, const BlockVectorType &src) const
+        {
+          apply(A, dst, src);
+        }
+        const FullMatrix<double> &A;
+      };
+      cg.solve(DenseOperator{A}, y, b, Balanced{balancing, jacobi});
+      INFO("deflated " << iterations << ", balanced "
+                       << balanced_control.last_step());
+      CHECK(iterations <= balanced_control.last_step() + 1);
+      // The same iterates: after five steps both residuals agree (later,
+      // round-off parts them; the balanced ones lose more).
+      {
+        SolverControl   five(5, 0.), balanced_five(5, 0.);
+        BlockVectorType x5 = new_vector(), y5 = new_vector();
+        CHECK_THROWS_AS(
+          solve_deflated_cg(
+            counted.equations, coarse, jacobi, b, x5, five, [](double) {}),
+          SolverControl::NoConvergence);
+        coarse.add(coarse.solve(b), y5, observed_start);
+        SolverCG<BlockVectorType> cg5(balanced_five);
+        CHECK_THROWS_AS(
+          cg5.solve(DenseOperator{A}, y5, b, Balanced{balancing, jacobi}),
+          SolverControl::NoConvergence);
+        CHECK(std::abs(five.last_value() - balanced_five.last_value()) <
+              1e-8 * five.last_value());
+      }
+      y -= x;
+      CHECK(y.l2_norm() < 1e-10 * x.l2_norm());
+
+      // And the coarse columns matter: Jacobi alone needs more.
+      SolverControl             plain_control(200, 1e-12 * b.l2_norm());
+      SolverCG<BlockVectorType> plain(plain_control);
+      struct Jacobi
+      {
+        void
+        vmult(BlockVectorType &dst, const BlockVectorType &src) const
+        {
+          smooth(dst, src);
+        }
+        const ControlCoarseSpace::Operator smooth;
+      };
+      BlockVectorType w = new_vector();
+      plain.solve(DenseOperator{A}, w, b, Jacobi{jacobi});
+      std::cout << "deflated CG test, alpha = " << alpha << ": " << iterations
+                << " iterations deflated, " << balanced_control.last_step()
+                << " balanced, " << plain_control.last_step() << " Jacobi alone"
+                << std::endl;
+      CHECK(plain_control.last_step() > iterations + 3);
+    }
+}
+
+
+
+TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
+{
+  CountedEquations         counted(0.);
+  const FullMatrix<double> A = counted.matrix();
+  const DeflationSpace     none({}, counted.equations);
+  const BlockVectorType    b =
+    from_function([](unsigned int i) { return std::cos(0.4 * i * i); });
+  const auto identity = [](BlockVectorType &dst, const BlockVectorType &src) {
+    dst = src;
+  };
+  BlockVectorType x = new_vector();
+  SolverControl   control(200, 1e-10 * b.l2_norm());
+  solve_deflated_cg(
+    counted.equations, none, identity, b, x, control, [](double) {});
+  CHECK(counted.n_adjoint == control.last_step());
+
+  struct DenseOperator
+  {
+    void
+    vmult(BlockVectorType &dst, const BlockVectorType &src) const
+    {
+      apply(A, dst, src);
+    }
+    const FullMatrix<double> &A;
+  };
+  BlockVectorType           y = new_vector();
+  SolverControl             cg_control(200, 1e-10 * b.l2_norm());
+  SolverCG<BlockVectorType> cg(cg_control);
+  cg.solve(DenseOperator{A}, y, b, PreconditionIdentity());
+  // The same iterates but for round-off: the direction's observation comes
+  // from a recurrence, not from a product.
+  CHECK(control.last_step() + 1 >= cg_control.last_step());
+  CHECK(control.last_step() <= cg_control.last_step() + 1);
+  y -= x;
+  CHECK(y.l2_norm() < 1e-8 * x.l2_norm());
+
+  // Too few iterations allowed: deal.II's exception, as its solvers throw.
+  SolverControl too_few(3, 1e-10 * b.l2_norm());
+  CHECK_THROWS_AS(
+    solve_deflated_cg(
+      counted.equations, none, identity, b, x, too_few, [](double) {}),
+    SolverControl::NoConvergence);
+}
