@@ -86,7 +86,9 @@ namespace ltn
                         "the reduced-space CG this is the tolerance of its "
                         "first iteration, relaxed as the CG's residual falls "
                         "(at most to 1e-1): keep it about 1e-2 times the "
-                        "Relative tolerance. Inside the full-space GMRES's "
+                        "Relative tolerance; with the two-level Control "
+                        "preconditioner it is at most that. Inside the "
+                        "full-space GMRES's "
                         "preconditioner it may be loose (1e-1 to 1e-3).");
     }
     prm.leave_subsection();
