@@ -15,7 +15,10 @@
 
 #include <cmath>
 
+#include "dense_controls.h"
+
 using namespace ltn;
+using dense_controls::apply;
 
 namespace
 {
@@ -26,21 +29,13 @@ namespace
   BlockVectorType
   new_vector()
   {
-    BlockVectorType v(2);
-    for (const unsigned int k : {0u, 1u})
-      v.block(k).reinit(complete_index_set(block_sizes[k]), MPI_COMM_SELF);
-    v.collect_sizes();
-    return v;
+    return dense_controls::new_vector(block_sizes);
   }
 
   BlockVectorType
   from_function(const std::function<double(unsigned int)> &f)
   {
-    BlockVectorType v = new_vector();
-    for (unsigned int i = 0; i < n; ++i)
-      v(i) = f(i);
-    v.compress(VectorOperation::insert);
-    return v;
+    return dense_controls::from_function(block_sizes, f);
   }
 
   /**
@@ -61,21 +56,6 @@ namespace
                        std::cos(j * M_PI * l / n);
       }
     return H;
-  }
-
-  void
-  apply(const FullMatrix<double> &A,
-        BlockVectorType          &dst,
-        const BlockVectorType    &src)
-  {
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        double sum = 0;
-        for (unsigned int l = 0; l < n; ++l)
-          sum += A(i, l) * src(l);
-        dst(i) = sum;
-      }
-    dst.compress(VectorOperation::insert);
   }
 
   /** The orthonormal smooth vectors s_0, s_1, s_2. */

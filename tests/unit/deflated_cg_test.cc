@@ -18,7 +18,11 @@
 
 #include <cmath>
 
+#include "dense_controls.h"
+
 using namespace ltn;
+using dense_controls::apply;
+using dense_controls::DenseOperator;
 
 namespace
 {
@@ -32,21 +36,13 @@ namespace
   BlockVectorType
   new_vector()
   {
-    BlockVectorType v(2);
-    for (const unsigned int k : {0u, 1u})
-      v.block(k).reinit(complete_index_set(block_sizes[k]), MPI_COMM_SELF);
-    v.collect_sizes();
-    return v;
+    return dense_controls::new_vector(block_sizes);
   }
 
   BlockVectorType
   from_function(const std::function<double(unsigned int)> &f)
   {
-    BlockVectorType v = new_vector();
-    for (unsigned int i = 0; i < n; ++i)
-      v(i) = f(i);
-    v.compress(VectorOperation::insert);
-    return v;
+    return dense_controls::from_function(block_sizes, f);
   }
 
   /**
@@ -189,21 +185,6 @@ namespace
     const NormalEquations       equations;
   };
 
-  void
-  apply(const FullMatrix<double> &A,
-        BlockVectorType          &dst,
-        const BlockVectorType    &src)
-  {
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        double sum = 0;
-        for (unsigned int l = 0; l < n; ++l)
-          sum += A(i, l) * src(l);
-        dst(i) = sum;
-      }
-    dst.compress(VectorOperation::insert);
-  }
-
   struct Balanced
   {
     void
@@ -287,15 +268,6 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
       coarse.add(coarse.solve(b), y, observed_start);
       SolverControl             balanced_control(100, 1e-12 * b.l2_norm());
       SolverCG<BlockVectorType> cg(balanced_control);
-      struct DenseOperator
-      {
-        void
-        vmult(BlockVectorType &dst, const BlockVectorType &src) const
-        {
-          apply(A, dst, src);
-        }
-        const FullMatrix<double> &A;
-      };
       cg.solve(DenseOperator{A}, y, b, Balanced{balancing, jacobi});
       INFO("deflated " << iterations << ", balanced "
                        << balanced_control.last_step());
@@ -360,15 +332,6 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
     counted.equations, none, identity, b, x, control, [](double) {});
   CHECK(counted.n_adjoint == control.last_step());
 
-  struct DenseOperator
-  {
-    void
-    vmult(BlockVectorType &dst, const BlockVectorType &src) const
-    {
-      apply(A, dst, src);
-    }
-    const FullMatrix<double> &A;
-  };
   BlockVectorType           y = new_vector();
   SolverControl             cg_control(200, 1e-10 * b.l2_norm());
   SolverCG<BlockVectorType> cg(cg_control);
