@@ -51,10 +51,14 @@ namespace ltn
                         "local solve per local control, and "
                         "the observation weights of the nonlocal controls; "
                         "keeps the iterations nearly independent of h), `two "
-                        "level` (the same, balanced by a coarse level of "
-                        "polynomial control fields: one Hessian product per "
-                        "coarse mode, once; it removes the slow modes the two "
-                        "models share across the overlap) or `none` "
+                        "level` (in the reduced-space CG: deflation by the "
+                        "nonlocal controls' polynomial fields and by every "
+                        "local control, one forward solve of its model per "
+                        "column, once; it takes the coupling of the two "
+                        "models' controls exactly and removes the slow modes "
+                        "they share across the overlap; in the full-space "
+                        "GMRES: the block-diagonal level balanced by the "
+                        "polynomial fields of both models) or `none` "
                         "(reduced-space CG only).");
       prm.declare_entry("Coarse space degree",
                         "1",
@@ -62,7 +66,8 @@ namespace ltn
                         "Total degree of the polynomials, per model and per "
                         "field component, spanning the coarse level of the "
                         "`two level` control preconditioner (3D elasticity: "
-                        "24 modes at degree 1, 60 at degree 2).");
+                        "12 nonlocal modes at degree 1, 30 at degree 2, and "
+                        "in the full-space GMRES as many local ones).");
       prm.declare_entry("Model solvers",
                         "direct",
                         Patterns::Selection("direct|preconditioned gmres|"
