@@ -81,8 +81,8 @@ namespace ltn
               std::max(loosest_model_tolerance, inner.relative_tolerance)));
         };
         const NormalEquations equations{
-          [&](const unsigned int k, const VectorType &controls) {
-            return hessian.solvers[k]->forward(controls, false);
+          [&](const unsigned int k, const VectorType &theta_k) {
+            return hessian.solvers[k]->forward(theta_k, false);
           },
           [&](const NormalEquations::States &u) {
             return system.mismatch(u[0], u[1]);
