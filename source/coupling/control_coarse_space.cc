@@ -163,29 +163,29 @@ namespace ltn
   }
 
   template <int dim>
-  std::vector<TrilinosWrappers::MPI::BlockVector>
+  std::vector<TrilinosWrappers::MPI::Vector>
   unit_control_fields(const ReducedHessian<dim> &hessian, const unsigned int k)
   {
-    std::vector<TrilinosWrappers::MPI::BlockVector> Z;
+    std::vector<TrilinosWrappers::MPI::Vector> Z;
     const unsigned int n = hessian.solvers[k]->new_control_vector().size();
     for (unsigned int j = 0; j < n; ++j)
       {
-        auto z = hessian.new_control_vector();
-        if (z.block(k).in_local_range(j))
-          z.block(k)(j) = 1.;
+        auto z = hessian.solvers[k]->new_control_vector();
+        if (z.in_local_range(j))
+          z(j) = 1.;
         z.compress(VectorOperation::insert);
         Z.push_back(z);
       }
     return Z;
   }
 
-#define LTN_INSTANTIATE(dim)                                    \
-  template std::vector<TrilinosWrappers::MPI::BlockVector>      \
-  polynomial_control_fields(const ReducedHessian<dim> &,        \
-                            unsigned int,                       \
-                            const std::vector<unsigned int> &); \
-  template std::vector<TrilinosWrappers::MPI::BlockVector>      \
-  unit_control_fields(const ReducedHessian<dim> &, unsigned int);
+#define LTN_INSTANTIATE(dim)                                               \
+  template std::vector<TrilinosWrappers::MPI::BlockVector>                 \
+  polynomial_control_fields(const ReducedHessian<dim> &,                   \
+                            unsigned int,                                  \
+                            const std::vector<unsigned int> &);            \
+  template std::vector<TrilinosWrappers::MPI::Vector> unit_control_fields( \
+    const ReducedHessian<dim> &, unsigned int);
   LTN_INSTANTIATE(1)
   LTN_INSTANTIATE(2)
   LTN_INSTANTIATE(3)

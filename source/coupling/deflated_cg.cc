@@ -18,23 +18,14 @@ namespace ltn
 
 
 
-  DeflationSpace::DeflationSpace(std::vector<BlockVectorType> Z_,
-                                 const NormalEquations       &equations)
+  DeflationSpace::DeflationSpace(std::vector<Column>    Z_,
+                                 const NormalEquations &equations)
     : equations(equations)
     , Z(std::move(Z_))
   {
     const unsigned int m = Z.size();
     for (const auto &z : Z)
-      {
-        const bool in_0 = z.block(0).l2_norm() > 0;
-        const bool in_1 = z.block(1).l2_norm() > 0;
-        AssertThrow(in_0 != in_1,
-                    ExcMessage("A coarse column must lie in the controls of "
-                               "exactly one model."));
-        const unsigned int k = in_0 ? 0 : 1;
-        model_of.push_back(k);
-        states.push_back(equations.forward(k, z.block(k)));
-      }
+      states.push_back(equations.forward(z.model, z.controls));
     // E(i, j) = (V z_i)^T B^T W B (V z_j) + alpha z_i . z_j, a column at a
     // time from the states' gradient of column j's observation.
     coarse_matrix.reinit(m, m);
@@ -42,13 +33,15 @@ namespace ltn
       {
         NormalEquations::States column{
           {equations.new_state(0), equations.new_state(1)}};
-        column[model_of[j]] = states[j];
+        column[Z[j].model] = states[j];
         const NormalEquations::States gradient =
           equations.observe_transpose(equations.observe(column));
         for (unsigned int i = 0; i < m; ++i)
           coarse_matrix(i, j) =
-            states[i] * gradient[model_of[i]] +
-            (equations.alpha != 0 ? equations.alpha * (Z[i] * Z[j]) : 0.);
+            states[i] * gradient[Z[i].model] +
+            (equations.alpha != 0 && Z[i].model == Z[j].model ?
+               equations.alpha * (Z[i].controls * Z[j].controls) :
+               0.);
       }
     // Symmetric but for round-off.
     for (unsigned int i = 0; i < m; ++i)
@@ -76,7 +69,7 @@ namespace ltn
   {
     Vector<double> y(Z.size());
     for (std::size_t j = 0; j < Z.size(); ++j)
-      y(j) = Z[j] * b;
+      y(j) = dot(Z[j], b);
     coarse_solve(y);
     return y;
   }
@@ -93,8 +86,8 @@ namespace ltn
     const NormalEquations::States gradient =
       equations.observe_transpose(observed);
     for (std::size_t j = 0; j < Z.size(); ++j)
-      y(j) = states[j] * gradient[model_of[j]] +
-             (equations.alpha != 0 ? equations.alpha * (Z[j] * v) : 0.);
+      y(j) = states[j] * gradient[Z[j].model] +
+             (equations.alpha != 0 ? equations.alpha * dot(Z[j], v) : 0.);
     coarse_solve(y);
     return y;
   }
@@ -112,12 +105,20 @@ namespace ltn
       {equations.new_state(0), equations.new_state(1)}};
     for (std::size_t j = 0; j < Z.size(); ++j)
       {
-        v.add(c(j), Z[j]);
-        combined[model_of[j]].add(c(j), states[j]);
+        v.block(Z[j].model).add(c(j), Z[j].controls);
+        combined[Z[j].model].add(c(j), states[j]);
       }
     const Observation added = equations.observe(combined);
     for (std::size_t q = 0; q < observed.size(); ++q)
       observed[q] += added[q];
+  }
+
+
+
+  double
+  DeflationSpace::dot(const Column &z, const BlockVectorType &v) const
+  {
+    return z.controls * v.block(z.model);
   }
 
 

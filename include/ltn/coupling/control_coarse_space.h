@@ -74,8 +74,8 @@ namespace ltn
                             const unsigned int               degree,
                             const std::vector<unsigned int> &models);
 
-  /** One unit vector per control of model @p k. */
+  /** One unit vector per control of model @p k, in that model's controls. */
   template <int dim>
-  std::vector<TrilinosWrappers::MPI::BlockVector>
+  std::vector<TrilinosWrappers::MPI::Vector>
   unit_control_fields(const ReducedHessian<dim> &hessian, const unsigned int k);
 } // namespace ltn

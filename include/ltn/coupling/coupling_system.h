@@ -123,7 +123,11 @@ namespace ltn
      * reduced-space CG holds explicitly (ControlPreconditioner); 0 without.
      */
     unsigned int explicit_controls = 0;
-    /** The coarse modes of its second level (ControlCoarseSpace); 0 without. */
+    /**
+     * The coarse modes of its second level (DeflationSpace in the
+     * reduced-space CG, ControlCoarseSpace in the full-space GMRES); 0
+     * without.
+     */
     unsigned int coarse_modes = 0;
     /** Wall time to build that preconditioner. */
     double preconditioner_setup_seconds = 0;

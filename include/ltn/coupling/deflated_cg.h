@@ -52,11 +52,11 @@ namespace ltn
   /**
    * The coarse space of a deflated CG on NormalEquations
    * (doc/discretization.md, section 19): columns `Z`, each in the controls
-   * of one model k, their states `V_k z` (one forward solve each, no
-   * adjoint solve), and the Cholesky factor of
-   * `E = Z^T A Z = (B V Z)^T W (B V Z) + alpha Z^T Z`, replicated on every
-   * rank. The states, not their observations, are kept: a column of the
-   * local model costs a vector of the local model's size.
+   * of one model k and kept only there, their states `V_k z` (one forward solve
+   * each, no adjoint solve), and the Cholesky factor of `E = Z^T A Z = (B V
+   * Z)^T W (B V Z) + alpha Z^T Z`, replicated on every rank. The states, not
+   * their observations, are kept: a column of the local model costs a vector of
+   * the local model's size.
    */
   class DeflationSpace
   {
@@ -65,8 +65,14 @@ namespace ltn
     using VectorType      = NormalEquations::VectorType;
     using Observation     = NormalEquations::Observation;
 
-    DeflationSpace(std::vector<BlockVectorType> Z,
-                   const NormalEquations       &equations);
+    /** A column of `Z`: controls of one model, zero on the other's. */
+    struct Column
+    {
+      unsigned int model;
+      VectorType   controls;
+    };
+
+    DeflationSpace(std::vector<Column> Z, const NormalEquations &equations);
 
     /** Not copyable: a copied LAPACKFullMatrix forgets its factorization. */
     DeflationSpace(const DeflationSpace &) = delete;
@@ -99,12 +105,16 @@ namespace ltn
     void
     coarse_solve(Vector<double> &y) const;
 
-    const NormalEquations       &equations;
-    std::vector<BlockVectorType> Z;
-    /** Per column: the model whose controls it lies in, and its state. */
-    std::vector<unsigned int> model_of;
-    std::vector<VectorType>   states;
-    LAPACKFullMatrix<double>  coarse_matrix;
+    /** `z . v`, over the controls of @p z's model. */
+    double
+    dot(const Column &z, const BlockVectorType &v) const;
+
+    const NormalEquations &equations;
+    /** The columns, each kept only in its model's controls. */
+    std::vector<Column> Z;
+    /** Per column, its state `V_k z`. */
+    std::vector<VectorType>  states;
+    LAPACKFullMatrix<double> coarse_matrix;
   };
 
   /**
