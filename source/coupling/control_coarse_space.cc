@@ -86,17 +86,75 @@ namespace ltn
             result.push_back({{a, b, c}});
       return result;
     }
+
+    /** A term of a polynomial field: a multiple of a monomial in a component.
+     */
+    struct Term
+    {
+      unsigned int                component;
+      std::array<unsigned int, 3> exponents;
+      double                      coefficient;
+    };
+
+    /**
+     * A basis of the fields with @p n_components components whose every
+     * component is a polynomial in @p dim variables of degree up to
+     * @p degree, as sums of terms: the constants first, then the linear
+     * fields, then the rest. Where the field is a displacement (@p dim
+     * components, dim > 1), the linear fields are the rigid rotations and
+     * then the symmetric strains: elasticity models reproduce rotations
+     * exactly, so the coarse states of these start from their exact values.
+     */
+    std::vector<std::vector<Term>>
+    polynomial_fields(const unsigned int dim,
+                      const unsigned int degree,
+                      const unsigned int n_components)
+    {
+      std::vector<std::vector<Term>> fields;
+      const auto                     degree_of = [](const auto &exponents) {
+        return exponents[0] + exponents[1] + exponents[2];
+      };
+      const bool displacement = n_components == dim && dim > 1;
+      for (const unsigned int wanted : {0u, 1u, 2u})
+        for (const auto &exponents : monomials(dim, degree))
+          if (wanted == 2 ? degree_of(exponents) >= 2 :
+                            degree_of(exponents) == wanted)
+            for (unsigned int c = 0; c < n_components; ++c)
+              if (!(displacement && wanted == 1))
+                fields.push_back({{c, exponents, 1.}});
+      if (displacement && degree >= 1)
+        {
+          const auto x = [](const unsigned int d) {
+            std::array<unsigned int, 3> exponents = {{0, 0, 0}};
+            exponents[d]                          = 1;
+            return exponents;
+          };
+          std::vector<std::vector<Term>> linear;
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int d = c + 1; d < dim; ++d)
+              linear.push_back({{c, x(d), 1.}, {d, x(c), -1.}});
+          for (unsigned int c = 0; c < dim; ++c)
+            for (unsigned int d = c; d < dim; ++d)
+              linear.push_back(
+                c == d ? std::vector<Term>{{c, x(c), 1.}} :
+                         std::vector<Term>{{c, x(d), 1.}, {d, x(c), 1.}});
+          fields.insert(fields.begin() + n_components,
+                        linear.begin(),
+                        linear.end());
+        }
+      return fields;
+    }
   } // namespace
 
 
 
   template <int dim>
-  std::vector<TrilinosWrappers::MPI::BlockVector>
+  std::vector<PolynomialControlField>
   polynomial_control_fields(const ReducedHessian<dim>       &hessian,
                             const unsigned int               degree,
                             const std::vector<unsigned int> &models)
   {
-    std::vector<TrilinosWrappers::MPI::BlockVector> Z;
+    std::vector<PolynomialControlField> Z;
     const MPI_Comm communicator = hessian.system.communicator();
     for (const unsigned int k : models)
       {
@@ -125,39 +183,70 @@ namespace ltn
                       1u + *std::max_element(model.control_components.begin(),
                                              model.control_components.end()),
           communicator);
+        const bool extended =
+          Utilities::MPI::min(model.node_positions.empty() ? 0u : 1u,
+                              communicator) > 0;
 
         const IndexSet owned =
           hessian.solvers[k]->new_control_vector().locally_owned_elements();
         const types::global_dof_index first =
           owned.is_empty() ? 0 : owned.nth_index_in_set(0);
-        for (const auto &exponents : monomials(dim, degree))
-          for (unsigned int c = 0; c < n_components; ++c)
-            {
-              auto z = hessian.new_control_vector();
-              for (std::size_t i = 0; i < x.size(); ++i)
-                if (model.control_components[i] == c)
-                  {
-                    double value = 1;
-                    for (unsigned int d = 0; d < dim; ++d)
-                      value *= std::pow((x[i][d] - 0.5 * (low[d] + high[d])) /
-                                          half_width,
-                                        exponents[d]);
-                    z.block(k)(first + i) = value;
-                  }
-              z.compress(VectorOperation::insert);
-              // Gram-Schmidt, twice; a column the others span is dropped
-              // (on controls in a plane, x and 1 are the same field).
-              const double norm = z.l2_norm();
-              for (unsigned int pass = 0; pass < 2; ++pass)
-                for (const auto &q : Z)
-                  z.add(-(z * q), q);
-              const double remaining = z.l2_norm();
-              if (remaining > 1e-8 * norm)
+        const types::global_dof_index first_dof =
+          model.owned.is_empty() ? 0 : model.owned.nth_index_in_set(0);
+        const auto monomial =
+          [&](const std::array<double, 3>       &p,
+              const std::array<unsigned int, 3> &exponents) {
+            double value = 1;
+            for (unsigned int d = 0; d < dim; ++d)
+              value *= std::pow((p[d] - 0.5 * (low[d] + high[d])) / half_width,
+                                exponents[d]);
+            return value;
+          };
+        const std::size_t first_of_model = Z.size();
+        for (const auto &field : polynomial_fields(dim, degree, n_components))
+          {
+            PolynomialControlField z{k, hessian.new_control_vector(), {}};
+            if (extended)
+              z.extension = model.new_vector();
+            for (const Term &term : field)
+              {
+                for (std::size_t i = 0; i < x.size(); ++i)
+                  if (model.control_components[i] == term.component)
+                    z.controls.block(k)(first + i) +=
+                      term.coefficient * monomial(x[i], term.exponents);
+                for (std::size_t n = 0;
+                     extended && n < model.node_positions.size();
+                     ++n)
+                  z.extension(first_dof + model.node_dofs * n +
+                              term.component) +=
+                    term.coefficient *
+                    monomial(model.node_positions[n], term.exponents);
+              }
+            z.controls.compress(VectorOperation::add);
+            if (extended)
+              z.extension.compress(VectorOperation::add);
+            // Gram-Schmidt, twice, against this model's fields (the other
+            // models' are orthogonal to them), the extension alongside; a
+            // column the others span is dropped (on controls in a plane, x
+            // and 1 are the same field).
+            const double norm = z.controls.l2_norm();
+            for (unsigned int pass = 0; pass < 2; ++pass)
+              for (std::size_t j = first_of_model; j < Z.size(); ++j)
                 {
-                  z /= remaining;
-                  Z.push_back(z);
+                  const double projection = z.controls * Z[j].controls;
+                  z.controls.add(-projection, Z[j].controls);
+                  if (extended)
+                    z.extension.add(-projection, Z[j].extension);
                 }
-            }
+            const double remaining = z.controls.l2_norm();
+            if (remaining > 1e-8 * norm)
+              {
+                z.controls /= remaining;
+                if (extended)
+                  z.extension /= remaining;
+                Z.push_back(std::move(z));
+              }
+          }
       }
     return Z;
   }
@@ -180,10 +269,10 @@ namespace ltn
   }
 
 #define LTN_INSTANTIATE(dim)                                               \
-  template std::vector<TrilinosWrappers::MPI::BlockVector>                 \
-  polynomial_control_fields(const ReducedHessian<dim> &,                   \
-                            unsigned int,                                  \
-                            const std::vector<unsigned int> &);            \
+  template std::vector<PolynomialControlField> polynomial_control_fields(  \
+    const ReducedHessian<dim> &,                                           \
+    unsigned int,                                                          \
+    const std::vector<unsigned int> &);                                    \
   template std::vector<TrilinosWrappers::MPI::Vector> unit_control_fields( \
     const ReducedHessian<dim> &, unsigned int);
   LTN_INSTANTIATE(1)

@@ -5,7 +5,8 @@ namespace ltn
   NormalEquations::Observation
   NormalEquations::observe_controls(const BlockVectorType &x) const
   {
-    return observe({{forward(0, x.block(0)), forward(1, x.block(1))}});
+    return observe(
+      {{forward(0, x.block(0), nullptr), forward(1, x.block(1), nullptr)}});
   }
 
 
@@ -24,8 +25,14 @@ namespace ltn
     , Z(std::move(Z_))
   {
     const unsigned int m = Z.size();
-    for (const auto &z : Z)
-      states.push_back(equations.forward(z.model, z.controls));
+    for (auto &z : Z)
+      {
+        states.push_back(
+          equations.forward(z.model,
+                            z.controls,
+                            z.state_guess.size() ? &z.state_guess : nullptr));
+        z.state_guess.clear(); // the state itself is kept
+      }
     // E(i, j) = (V z_i)^T B^T W B (V z_j) + alpha z_i . z_j, a column at a
     // time from the states' gradient of column j's observation.
     coarse_matrix.reinit(m, m);

@@ -106,9 +106,11 @@ namespace ltn
       }
 
     const double b_norm = b.l2_norm();
-    x                   = 0.;
     if (b_norm == 0)
-      return;
+      {
+        x = 0.;
+        return;
+      }
     if (last && last->rhs.size() > 0)
       {
         const double last_norm = last->rhs.l2_norm();
@@ -206,13 +208,20 @@ namespace ltn
 
   TrilinosWrappers::MPI::Vector
   ModelSolver::forward(const TrilinosWrappers::MPI::Vector &theta,
-                       const bool                           with_data) const
+                       const bool                           with_data,
+                       const TrilinosWrappers::MPI::Vector *initial_guess) const
   {
     // The control rows of `r` are zero.
     TrilinosWrappers::MPI::Vector rhs = extend_controls(theta);
     if (with_data)
       rhs += model.rhs;
 
+    if (initial_guess)
+      {
+        TrilinosWrappers::MPI::Vector field = *initial_guess;
+        solve(false, field, rhs, nullptr);
+        return field;
+      }
     TrilinosWrappers::MPI::Vector field = model.new_vector();
     solve(false, field, rhs, with_data ? nullptr : &last_forward);
     return field;

@@ -81,8 +81,10 @@ namespace ltn
               std::max(loosest_model_tolerance, inner.relative_tolerance)));
         };
         const NormalEquations equations{
-          [&](const unsigned int k, const VectorType &theta_k) {
-            return hessian.solvers[k]->forward(theta_k, false);
+          [&](const unsigned int k,
+              const VectorType  &theta_k,
+              const VectorType  *initial_state) {
+            return hessian.solvers[k]->forward(theta_k, false, initial_state);
           },
           [&](const NormalEquations::States &u) {
             return system.mismatch(u[0], u[1]);
@@ -116,9 +118,15 @@ namespace ltn
             std::vector<DeflationSpace::Column> Z;
             if (two_level)
               {
+                // Each field's forward solve starts from the field itself
+                // at every particle: exact for rigid motions, and away from
+                // cracks for any linear field (doc/discretization.md,
+                // section 19).
                 for (auto &z : polynomial_control_fields(
                        hessian, *controls.coarse_degree, {nonlocal_model}))
-                  Z.push_back({nonlocal_model, z.block(nonlocal_model)});
+                  Z.push_back({nonlocal_model,
+                               z.controls.block(nonlocal_model),
+                               std::move(z.extension)});
                 for (auto &z : unit_control_fields(hessian, local_model))
                   Z.push_back({local_model, std::move(z)});
               }

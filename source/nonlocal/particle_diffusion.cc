@@ -37,6 +37,9 @@ namespace ltn
         return lattice.position(lattice.index(i));
       },
       [](const types::global_dof_index) { return 0u; });
+    model.locate_nodes<dim>(model.owned, [&](const types::global_dof_index n) {
+      return lattice.position(lattice.index(n));
+    });
   }
 
 

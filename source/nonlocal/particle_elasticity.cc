@@ -90,6 +90,10 @@ namespace ltn
       [](const types::global_dof_index i) {
         return static_cast<unsigned int>(i % n_components);
       });
+    model.locate_nodes<dim>(owned_particles,
+                            [&](const types::global_dof_index n) {
+                              return lattice.position(lattice.index(n));
+                            });
   }
 
 

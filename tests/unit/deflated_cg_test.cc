@@ -135,7 +135,8 @@ namespace
       : F(observation_matrix())
       , weights(observation_weights())
       , equations{[this](const unsigned int                   k,
-                         const TrilinosWrappers::MPI::Vector &x) {
+                         const TrilinosWrappers::MPI::Vector &x,
+                         const TrilinosWrappers::MPI::Vector *) {
                     ++n_forward[k];
                     return x;
                   },

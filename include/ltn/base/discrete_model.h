@@ -105,6 +105,17 @@ namespace ltn
      */
     std::vector<std::array<double, 3>> control_positions;
     std::vector<unsigned int>          control_components;
+    /**
+     * Per owned node of a particle model, whose degrees of freedom are
+     * numbered `node_dofs * node + c` in the order of `owned`: where it sits
+     * (unused coordinates 0). Empty for models not numbered by nodes. The
+     * reduced-space CG extends the smooth fields of its coarse space from the
+     * controls to every node there, as the initial guesses of their states:
+     * a field the model reproduces (a rigid motion, and away from cracks a
+     * linear one) then needs few iterations or none (doc/discretization.md,
+     * section 19).
+     */
+    std::vector<std::array<double, 3>> node_positions;
 
     /**
      * @name What an iterative solver of the model needs besides `M`.
@@ -199,6 +210,25 @@ namespace ltn
             p[d] = x[d];
           control_positions.push_back(p);
           control_components.push_back(component_of(i));
+        }
+    }
+
+    /**
+     * Fill `node_positions` from @p position_of, a function of an owned
+     * node of @p owned_nodes.
+     */
+    template <int dim, typename PositionOf>
+    void
+    locate_nodes(const IndexSet &owned_nodes, const PositionOf &position_of)
+    {
+      node_positions.clear();
+      for (const auto n : owned_nodes)
+        {
+          const Point<dim>      x = position_of(n);
+          std::array<double, 3> p = {{0., 0., 0.}};
+          for (unsigned int d = 0; d < dim; ++d)
+            p[d] = x[d];
+          node_positions.push_back(p);
         }
     }
   };

@@ -61,6 +61,24 @@ namespace ltn
   };
 
   /**
+   * A smooth field of the coarse space, on the controls of one model, with
+   * the same field at all of that model's nodes where it has them.
+   */
+  struct PolynomialControlField
+  {
+    /** The model whose controls the field lives on. */
+    unsigned int model;
+    /** The field at the controls, zero at the other model's. */
+    TrilinosWrappers::MPI::BlockVector controls;
+    /**
+     * The field at every degree of freedom of the model (zero at the
+     * components it has no polynomial for), when the model has
+     * `DiscreteModel::node_positions`; otherwise empty.
+     */
+    TrilinosWrappers::MPI::Vector extension;
+  };
+
+  /**
    * The coarse modes of the two-level control preconditioner: per model in
    * @p models and per component of its field, the monomials of total degree
    * up to @p degree at its controls (coordinates centred and scaled to
@@ -69,7 +87,7 @@ namespace ltn
    * which both models represent and the overlap barely tells apart.
    */
   template <int dim>
-  std::vector<TrilinosWrappers::MPI::BlockVector>
+  std::vector<PolynomialControlField>
   polynomial_control_fields(const ReducedHessian<dim>       &hessian,
                             const unsigned int               degree,
                             const std::vector<unsigned int> &models);

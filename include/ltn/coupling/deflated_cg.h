@@ -19,7 +19,8 @@ namespace ltn
    * Normal equations `(F^T W F + alpha I) x = b` with `F = B V` for the
    * controls `x = [x_0; x_1]` of two models, as the reduced space has them
    * (doc/discretization.md, sections 10 and 19): @p forward maps model k's
-   * controls to its state (`V_k`, a forward solve), @p observe takes both
+   * controls to its state (`V_k`, a forward solve, from an initial guess of
+   * the state if one is given, else from the solver's own), @p observe takes both
    * states to an observation (`B`, the overlap mismatch at this rank's
    * points), @p observe_transpose takes an observation `d` to the states'
    * gradient `B^T W d`, and @p adjoint maps states' gradients to the
@@ -32,8 +33,11 @@ namespace ltn
     using States          = std::array<VectorType, 2>;
     using Observation     = std::vector<double>;
 
-    std::function<VectorType(unsigned int k, const VectorType &)> forward;
-    std::function<Observation(const States &)>                    observe;
+    std::function<VectorType(unsigned int      k,
+                             const VectorType &controls,
+                             const VectorType *initial_state)>
+                                                   forward;
+    std::function<Observation(const States &)>     observe;
     std::function<States(const Observation &)>     observe_transpose;
     std::function<BlockVectorType(const States &)> adjoint;
     /** A zero state of model k. */
@@ -65,11 +69,16 @@ namespace ltn
     using VectorType      = NormalEquations::VectorType;
     using Observation     = NormalEquations::Observation;
 
-    /** A column of `Z`: controls of one model, zero on the other's. */
+    /**
+     * A column of `Z`: controls of one model, zero on the other's, and
+     * optionally a guess of its state (else empty), where its forward solve
+     * starts.
+     */
     struct Column
     {
       unsigned int model;
       VectorType   controls;
+      VectorType   state_guess = {};
     };
 
     DeflationSpace(std::vector<Column> Z, const NormalEquations &equations);

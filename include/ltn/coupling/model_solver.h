@@ -78,11 +78,14 @@ namespace ltn
     /**
      * The model's field for controls @p theta; with @p with_data, the load
      * and fixed data enter, otherwise they are taken as zero (the linear part
-     * of the control-to-state map).
+     * of the control-to-state map). The iterative solver starts from
+     * @p initial_guess if given (its values at the controls and the fixed
+     * data are replaced), else from the warm start.
      */
     TrilinosWrappers::MPI::Vector
     forward(const TrilinosWrappers::MPI::Vector &theta,
-            const bool                           with_data) const;
+            const bool                           with_data,
+            const TrilinosWrappers::MPI::Vector *initial_guess = nullptr) const;
 
     /**
      * The adjoint of the control-to-state map of forward() (without data):
@@ -132,8 +135,8 @@ namespace ltn
 
     /**
      * Solve `M x = b` (@p transpose: `M^T x = b`); the iterative solver
-     * starts from the best multiple of @p last's solution, if given, and
-     * replaces it with this solve's.
+     * starts from @p x plus the best multiple of @p last's solution, if
+     * given, and replaces it with this solve's.
      */
     void
     solve(const bool                           transpose,
