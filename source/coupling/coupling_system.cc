@@ -34,21 +34,22 @@ namespace ltn
   CouplingSystem<dim>::mismatch(const VectorType &u_nonlocal,
                                 const VectorType &u_local) const
   {
-    std::array<VectorType, 2> u;
+    std::vector<double> d(overlap.weights.size());
     for (const unsigned int k : {0u, 1u})
       {
-        u[k].reinit(models[k]->owned,
-                    overlap_columns[k],
-                    models[k]->communicator);
-        u[k] = (k == nonlocal_model) ? u_nonlocal : u_local;
-      }
-    std::vector<double> d(overlap.weights.size());
-    for (std::size_t q = 0; q < d.size(); ++q)
-      {
-        for (const auto &[i, e] : overlap.nonlocal_rows[q])
-          d[q] += e * u[nonlocal_model](i);
-        for (const auto &[j, p] : overlap.local_rows[q])
-          d[q] -= p * u[local_model](j);
+        const VectorType &field = (k == nonlocal_model) ? u_nonlocal : u_local;
+        if (field.size() == 0)
+          continue;
+        VectorType ghosted(models[k]->owned,
+                           overlap_columns[k],
+                           models[k]->communicator);
+        ghosted           = field;
+        const double sign = (k == nonlocal_model) ? 1. : -1.;
+        const auto  &rows =
+          (k == nonlocal_model) ? overlap.nonlocal_rows : overlap.local_rows;
+        for (std::size_t q = 0; q < d.size(); ++q)
+          for (const auto &[i, b] : rows[q])
+            d[q] += sign * b * ghosted(i);
       }
     return d;
   }
@@ -75,15 +76,22 @@ namespace ltn
                                          VectorType &gradient_nonlocal,
                                          VectorType &gradient_local) const
   {
+    gradient_nonlocal = mismatch_gradient(nonlocal_model, d);
+    gradient_local    = mismatch_gradient(local_model, d);
+  }
+
+
+
+  template <int dim>
+  typename CouplingSystem<dim>::VectorType
+  CouplingSystem<dim>::mismatch_gradient(const unsigned int         k,
+                                         const std::vector<double> &d) const
+  {
     // B = [E, -P]: the local rows enter with a minus sign.
-    gradient_nonlocal =
-      sum_over_rows(nonlocal_model, [&](const std::size_t q, const double e) {
-        return e * overlap.weights[q] * d[q];
-      });
-    gradient_local =
-      sum_over_rows(local_model, [&](const std::size_t q, const double p) {
-        return -p * overlap.weights[q] * d[q];
-      });
+    const double sign = (k == nonlocal_model) ? 1. : -1.;
+    return sum_over_rows(k, [&](const std::size_t q, const double b) {
+      return sign * b * overlap.weights[q] * d[q];
+    });
   }
 
 

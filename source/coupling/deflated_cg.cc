@@ -1,4 +1,8 @@
+#include <deal.II/lac/lapack_templates.h>
+
 #include <ltn/coupling/deflated_cg.h>
+
+#include <algorithm>
 
 namespace ltn
 {
@@ -14,50 +18,174 @@ namespace ltn
   NormalEquations::BlockVectorType
   NormalEquations::gradient(const Observation &d) const
   {
-    return adjoint(observe_transpose(d));
+    return adjoint({{observe_transpose(0, d), observe_transpose(1, d)}});
   }
+
+
+
+  namespace
+  {
+    /** `C = alpha A^T B + beta C` for column-major `A` (k x m), `B` (k x n). */
+    void
+    transposed_product(const std::size_t  k,
+                       const unsigned int m,
+                       const unsigned int n,
+                       const double      *A,
+                       const double      *B,
+                       const double       beta,
+                       double            *C)
+    {
+      if (k == 0 || m == 0 || n == 0)
+        return;
+      const types::blas_int rows = k, columns_A = m, columns_B = n;
+      const double          one = 1.;
+      gemm("T",
+           "N",
+           &columns_A,
+           &columns_B,
+           &rows,
+           &one,
+           A,
+           &rows,
+           B,
+           &rows,
+           &beta,
+           C,
+           &columns_A);
+    }
+
+    /** The bytes of gradients a block of columns of `E` is formed from. */
+    constexpr std::size_t block_bytes = std::size_t(4) << 20;
+  } // namespace
 
 
 
   DeflationSpace::DeflationSpace(std::vector<Column>    Z_,
                                  const NormalEquations &equations)
     : equations(equations)
+    , communicator(equations.new_state(0).get_mpi_communicator())
     , Z(std::move(Z_))
   {
-    const unsigned int m = Z.size();
+    for (const unsigned int k : {0u, 1u})
+      states[k].local_size = equations.new_state(k).locally_owned_size();
+    for (unsigned int j = 0; j < Z.size(); ++j)
+      states[Z[j].model].columns.push_back(j);
+    for (auto &model : states)
+      model.packed.reserve(model.local_size * model.columns.size());
     for (auto &z : Z)
       {
-        states.push_back(
+        const VectorType state =
           equations.forward(z.model,
                             z.controls,
-                            z.state_guess.size() ? &z.state_guess : nullptr));
+                            z.state_guess.size() ? &z.state_guess : nullptr);
         z.state_guess.clear(); // the state itself is kept
+        auto &packed = states[z.model].packed;
+        packed.insert(packed.end(), state.begin(), state.end());
       }
-    // E(i, j) = (V z_i)^T B^T W B (V z_j) + alpha z_i . z_j, a column at a
-    // time from the states' gradient of column j's observation.
+    form_coarse_matrix();
+  }
+
+
+
+  void
+  DeflationSpace::form_coarse_matrix()
+  {
+    // E(i, j) = (V z_i)^T B^T W B (V z_j) + alpha z_i . z_j. Column j's
+    // observation gives the gradients of the models k >= model(j); the rest
+    // of E is its transpose. The gradients of a block of columns are packed
+    // and multiplied with the packed states at once.
+    const unsigned int  m = Z.size();
+    std::vector<double> E(std::size_t(m) * m, 0.);
+    for (unsigned int first = 0; first < m;)
+      {
+        std::array<std::vector<double>, 2> gradients;
+        std::vector<unsigned int>          block;
+        std::size_t                        bytes = 0;
+        for (; first < m && (block.empty() || bytes < block_bytes); ++first)
+          {
+            NormalEquations::States column;
+            const unsigned int      k  = Z[first].model;
+            column[k]                  = equations.new_state(k);
+            const std::size_t position = std::find(states[k].columns.begin(),
+                                                   states[k].columns.end(),
+                                                   first) -
+                                         states[k].columns.begin();
+            std::copy_n(states[k].packed.begin() +
+                          position * states[k].local_size,
+                        states[k].local_size,
+                        column[k].begin());
+            const Observation observed = equations.observe(column);
+            for (unsigned int l = k; l < 2; ++l)
+              if (!states[l].columns.empty())
+                {
+                  const VectorType g = equations.observe_transpose(l, observed);
+                  gradients[l].insert(gradients[l].end(), g.begin(), g.end());
+                  bytes += sizeof(double) * states[l].local_size;
+                }
+            block.push_back(first);
+          }
+        // The block's columns whose observation gave model l's gradient.
+        for (const unsigned int l : {0u, 1u})
+          {
+            std::vector<unsigned int> with_gradient;
+            for (const unsigned int j : block)
+              if (Z[j].model <= l)
+                with_gradient.push_back(j);
+            if (with_gradient.empty() || states[l].columns.empty())
+              continue;
+            std::vector<double> y(states[l].columns.size() *
+                                    with_gradient.size(),
+                                  0.);
+            add_state_products(l, gradients[l].data(), with_gradient.size(), y);
+            for (std::size_t b = 0; b < with_gradient.size(); ++b)
+              for (std::size_t a = 0; a < states[l].columns.size(); ++a)
+                E[std::size_t(with_gradient[b]) * m + states[l].columns[a]] =
+                  y[b * states[l].columns.size() + a];
+          }
+      }
+    Utilities::MPI::sum(E, communicator, E);
+
     coarse_matrix.reinit(m, m);
     for (unsigned int j = 0; j < m; ++j)
-      {
-        NormalEquations::States column{
-          {equations.new_state(0), equations.new_state(1)}};
-        column[Z[j].model] = states[j];
-        const NormalEquations::States gradient =
-          equations.observe_transpose(equations.observe(column));
+      for (unsigned int i = 0; i < m; ++i)
+        {
+          // E is stored by columns j, its entries (i, j) for model(i) >=
+          // model(j).
+          const auto entry = [&](const unsigned int row,
+                                 const unsigned int col) {
+            return Z[row].model >= Z[col].model ?
+                     E[std::size_t(col) * m + row] :
+                     E[std::size_t(row) * m + col];
+          };
+          // Symmetric but for round-off.
+          coarse_matrix(i, j) = 0.5 * (entry(i, j) + entry(j, i));
+        }
+    if (equations.alpha != 0)
+      for (unsigned int j = 0; j < m; ++j)
         for (unsigned int i = 0; i < m; ++i)
-          coarse_matrix(i, j) =
-            states[i] * gradient[Z[i].model] +
-            (equations.alpha != 0 && Z[i].model == Z[j].model ?
-               equations.alpha * (Z[i].controls * Z[j].controls) :
-               0.);
-      }
-    // Symmetric but for round-off.
-    for (unsigned int i = 0; i < m; ++i)
-      for (unsigned int j = 0; j < i; ++j)
-        coarse_matrix(i, j) = coarse_matrix(j, i) =
-          0.5 * (coarse_matrix(i, j) + coarse_matrix(j, i));
+          if (Z[i].model == Z[j].model)
+            coarse_matrix(i, j) +=
+              equations.alpha * (Z[i].controls * Z[j].controls);
     coarse_matrix.set_property(LAPACKSupport::symmetric);
     if (m > 0)
       coarse_matrix.compute_cholesky_factorization();
+  }
+
+
+
+  void
+  DeflationSpace::add_state_products(const unsigned int   k,
+                                     const double        *g,
+                                     const unsigned int   n_columns,
+                                     std::vector<double> &y) const
+  {
+    transposed_product(states[k].local_size,
+                       states[k].columns.size(),
+                       n_columns,
+                       states[k].packed.data(),
+                       g,
+                       1.,
+                       y.data());
   }
 
 
@@ -90,10 +218,19 @@ namespace ltn
     Vector<double> y(Z.size());
     if (Z.empty())
       return y;
-    const NormalEquations::States gradient =
-      equations.observe_transpose(observed);
+    std::vector<double> products(Z.size(), 0.);
+    for (const unsigned int k : {0u, 1u})
+      if (!states[k].columns.empty())
+        {
+          const VectorType    g = equations.observe_transpose(k, observed);
+          std::vector<double> y_k(states[k].columns.size(), 0.);
+          add_state_products(k, g.begin(), 1, y_k);
+          for (std::size_t a = 0; a < y_k.size(); ++a)
+            products[states[k].columns[a]] = y_k[a];
+        }
+    Utilities::MPI::sum(products, communicator, products);
     for (std::size_t j = 0; j < Z.size(); ++j)
-      y(j) = states[j] * gradient[Z[j].model] +
+      y(j) = products[j] +
              (equations.alpha != 0 ? equations.alpha * dot(Z[j], v) : 0.);
     coarse_solve(y);
     return y;
@@ -108,13 +245,33 @@ namespace ltn
   {
     if (Z.empty())
       return;
-    NormalEquations::States combined{
-      {equations.new_state(0), equations.new_state(1)}};
     for (std::size_t j = 0; j < Z.size(); ++j)
-      {
-        v.block(Z[j].model).add(c(j), Z[j].controls);
-        combined[Z[j].model].add(c(j), states[j]);
-      }
+      v.block(Z[j].model).add(c(j), Z[j].controls);
+    // The combined state V_k Z_k c_k of each model with columns.
+    NormalEquations::States combined;
+    for (const unsigned int k : {0u, 1u})
+      if (!states[k].columns.empty())
+        {
+          combined[k] = equations.new_state(k);
+          std::vector<double> c_k;
+          for (const unsigned int j : states[k].columns)
+            c_k.push_back(c(j));
+          const types::blas_int rows    = states[k].local_size,
+                                columns = c_k.size(), one_step = 1;
+          const double one = 1., zero = 0.;
+          if (rows > 0)
+            gemv("N",
+                 &rows,
+                 &columns,
+                 &one,
+                 states[k].packed.data(),
+                 &rows,
+                 c_k.data(),
+                 &one_step,
+                 &zero,
+                 combined[k].begin(),
+                 &one_step);
+        }
     const Observation added = equations.observe(combined);
     for (std::size_t q = 0; q < observed.size(); ++q)
       observed[q] += added[q];
@@ -166,8 +323,7 @@ namespace ltn
     BlockVectorType r = b;
     if (coarse.size() > 0)
       {
-        Observation observed_x =
-          equations.observe({{equations.new_state(0), equations.new_state(1)}});
+        Observation observed_x = equations.observe(NormalEquations::States());
         coarse.add(coarse.solve(b), x, observed_x);
         r -= product(x, observed_x);
       }

@@ -89,10 +89,8 @@ namespace ltn
           [&](const NormalEquations::States &u) {
             return system.mismatch(u[0], u[1]);
           },
-          [&](const std::vector<double> &d) {
-            NormalEquations::States gradient;
-            system.mismatch_gradient(d, gradient[0], gradient[1]);
-            return gradient;
+          [&](const unsigned int k, const std::vector<double> &d) {
+            return system.mismatch_gradient(k, d);
           },
           [&](const NormalEquations::States &gradient) {
             BlockVectorType g(2);

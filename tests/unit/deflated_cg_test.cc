@@ -141,28 +141,28 @@ namespace
                     return x;
                   },
                   [this](const States &u) {
+                    // An empty state is a zero one.
                     Observation y(n_observations, 0.);
                     for (unsigned int q = 0; q < n_observations; ++q)
                       for (unsigned int l = 0; l < n; ++l)
-                        y[q] += F(q, l) * (l < block_sizes[0] ?
-                                             u[0](l) :
-                                             u[1](l - block_sizes[0]));
+                        {
+                          const unsigned int k = l < block_sizes[0] ? 0 : 1;
+                          if (u[k].size() > 0)
+                            y[q] += F(q, l) * u[k](l - k * block_sizes[0]);
+                        }
                     return y;
                   },
-                  [this](const Observation &d) {
-                    States g{{zero_state(0), zero_state(1)}};
-                    for (unsigned int l = 0; l < n; ++l)
+                  [this](const unsigned int k, const Observation &d) {
+                    auto g = zero_state(k);
+                    for (unsigned int i = 0; i < block_sizes[k]; ++i)
                       {
-                        double sum = 0;
+                        const unsigned int l   = i + k * block_sizes[0];
+                        double             sum = 0;
                         for (unsigned int q = 0; q < n_observations; ++q)
                           sum += F(q, l) * weights[q] * d[q];
-                        if (l < block_sizes[0])
-                          g[0](l) = sum;
-                        else
-                          g[1](l - block_sizes[0]) = sum;
+                        g(i) = sum;
                       }
-                    for (auto &v : g)
-                      v.compress(VectorOperation::insert);
+                    g.compress(VectorOperation::insert);
                     return g;
                   },
                   [this](const States &g) {

@@ -45,7 +45,10 @@ namespace ltn
                    const OverlapQuadrature<dim> &overlap,
                    const double                  tikhonov_parameter);
 
-    /** The mismatch `d_q = E_q u_n - P_q u_l` at this rank's points. */
+    /**
+     * The mismatch `d_q = E_q u_n - P_q u_l` at this rank's points; an empty
+     * vector (on every rank) stands for a zero field, whose rows are skipped.
+     */
     std::vector<double>
     mismatch(const VectorType &u_nonlocal, const VectorType &u_local) const;
 
@@ -62,6 +65,10 @@ namespace ltn
     mismatch_gradient(const std::vector<double> &d,
                       VectorType                &gradient_nonlocal,
                       VectorType                &gradient_local) const;
+
+    /** The part of mismatch_gradient() of model @p k alone. */
+    VectorType
+    mismatch_gradient(const unsigned int k, const std::vector<double> &d) const;
 
     /**
      * `B^T W B x` for the fields @p u_nonlocal and @p u_local: the gradient

@@ -20,11 +20,12 @@ namespace ltn
    * controls `x = [x_0; x_1]` of two models, as the reduced space has them
    * (doc/discretization.md, sections 10 and 19): @p forward maps model k's
    * controls to its state (`V_k`, a forward solve, from an initial guess of
-   * the state if one is given, else from the solver's own), @p observe takes both
-   * states to an observation (`B`, the overlap mismatch at this rank's
-   * points), @p observe_transpose takes an observation `d` to the states'
-   * gradient `B^T W d`, and @p adjoint maps states' gradients to the
-   * controls' (`V^T`, the adjoint solves).
+   * the state if one is given, else from the solver's own), @p observe takes
+   * both states to an observation (`B`, the overlap mismatch at this rank's
+   * points; an empty state, on every rank, is a zero one), @p
+   * observe_transpose takes an observation `d` to model k's part of the
+   * states' gradient `B^T W d`, and @p adjoint maps states' gradients to
+   * the controls' (`V^T`, the adjoint solves).
    */
   struct NormalEquations
   {
@@ -36,9 +37,10 @@ namespace ltn
     std::function<VectorType(unsigned int      k,
                              const VectorType &controls,
                              const VectorType *initial_state)>
-                                                   forward;
-    std::function<Observation(const States &)>     observe;
-    std::function<States(const Observation &)>     observe_transpose;
+                                               forward;
+    std::function<Observation(const States &)> observe;
+    std::function<VectorType(unsigned int k, const Observation &)>
+                                                   observe_transpose;
     std::function<BlockVectorType(const States &)> adjoint;
     /** A zero state of model k. */
     std::function<VectorType(unsigned int k)> new_state;
@@ -56,11 +58,14 @@ namespace ltn
   /**
    * The coarse space of a deflated CG on NormalEquations
    * (doc/discretization.md, section 19): columns `Z`, each in the controls
-   * of one model k and kept only there, their states `V_k z` (one forward solve
-   * each, no adjoint solve), and the Cholesky factor of `E = Z^T A Z = (B V
-   * Z)^T W (B V Z) + alpha Z^T Z`, replicated on every rank. The states, not
-   * their observations, are kept: a column of the local model costs a vector of
-   * the local model's size.
+   * of one model k and kept only there, their states `V_k z` (one forward
+   * solve each, no adjoint solve), and the Cholesky factor of
+   * `E = Z^T A Z = (B V Z)^T W (B V Z) + alpha Z^T Z`, replicated on every
+   * rank. The states, not their observations, are kept: a column of the
+   * local model costs a vector of the local model's size. Each model's states
+   * are packed into one dense matrix of this rank's entries, so that `E` and
+   * the products with `(V Z)^T` are BLAS products, not one distributed inner
+   * product per pair of columns.
    */
   class DeflationSpace
   {
@@ -110,6 +115,32 @@ namespace ltn
     size() const;
 
   private:
+    /** One model's columns and their states. */
+    struct ModelStates
+    {
+      /** The numbers of the model's columns in `Z`. */
+      std::vector<unsigned int> columns;
+      /** This rank's entries of a state. */
+      std::size_t local_size = 0;
+      /** The states, column-major: `local_size` rows, a column each. */
+      std::vector<double> packed;
+    };
+
+    /** Form `E` and factor it. */
+    void
+    form_coarse_matrix();
+
+    /**
+     * `y += (V_k Z_k)^T g` at model @p k's columns, over this rank's entries
+     * of its gradients @p g (`local_size` rows, @p n_columns columns,
+     * column-major): `y` is `m x n_columns`, column-major.
+     */
+    void
+    add_state_products(const unsigned int   k,
+                       const double        *g,
+                       const unsigned int   n_columns,
+                       std::vector<double> &y) const;
+
     /** `E^{-1} y` in place. */
     void
     coarse_solve(Vector<double> &y) const;
@@ -119,11 +150,11 @@ namespace ltn
     dot(const Column &z, const BlockVectorType &v) const;
 
     const NormalEquations &equations;
+    const MPI_Comm         communicator;
     /** The columns, each kept only in its model's controls. */
-    std::vector<Column> Z;
-    /** Per column, its state `V_k z`. */
-    std::vector<VectorType>  states;
-    LAPACKFullMatrix<double> coarse_matrix;
+    std::vector<Column>        Z;
+    std::array<ModelStates, 2> states;
+    LAPACKFullMatrix<double>   coarse_matrix;
   };
 
   /**
