@@ -30,6 +30,9 @@ parser.add_argument("--csv", default=os.path.join(here, "results.csv"))
 parser.add_argument("--png", default=os.path.join(here, "error_vs_time.png"))
 parser.add_argument("--reuse", action="store_true",
                     help="keep the runs whose summary.json exists (resume)")
+parser.add_argument("--only", nargs="+", metavar="RUN",
+                    help="run only these curves (their names as in the CSV; "
+                    "the error needs an all-peridynamic one)")
 options = parser.parse_args()
 
 all_peridynamic = ["Geometry/Models=nonlocal only"]
@@ -121,6 +124,11 @@ def extrapolate(values):
     ratio = (a - b) / (b - c)
     return c - (b - c) / (ratio - 1), math.log2(ratio)
 
+
+if options.only:
+    for scene in scenes.values():
+        scene["runs"] = {name: run for name, run in scene["runs"].items()
+                         if name in options.only}
 
 rows = []
 for scene in options.scenes:

@@ -25,20 +25,24 @@ namespace ltn
 
   namespace
   {
-    /** `C = alpha A^T B + beta C` for column-major `A` (k x m), `B` (k x n). */
+    /**
+     * `C += A^T B` for column-major `A` (k x m), `B` (k x n) and `C` (m x n,
+     * leading dimension ldc).
+     */
     void
-    transposed_product(const std::size_t  k,
-                       const unsigned int m,
-                       const unsigned int n,
-                       const double      *A,
-                       const double      *B,
-                       const double       beta,
-                       double            *C)
+    add_transposed_product(const std::size_t  k,
+                           const unsigned int m,
+                           const unsigned int n,
+                           const double      *A,
+                           const double      *B,
+                           double            *C,
+                           const unsigned int ldc)
     {
       if (k == 0 || m == 0 || n == 0)
         return;
-      const types::blas_int rows = k, columns_A = m, columns_B = n;
-      const double          one = 1.;
+      const types::blas_int rows = k, columns_A = m, columns_B = n,
+                            leading_C = ldc;
+      const double one                = 1.;
       gemm("T",
            "N",
            &columns_A,
@@ -49,14 +53,26 @@ namespace ltn
            &rows,
            B,
            &rows,
-           &beta,
+           &one,
            C,
-           &columns_A);
+           &leading_C);
     }
 
-    /** The bytes of gradients a block of columns of `E` is formed from. */
-    constexpr std::size_t block_bytes = std::size_t(4) << 20;
+    /**
+     * The bytes of a panel of states, and of the gradients a block of
+     * columns of `E` is formed from.
+     */
+    constexpr std::size_t block_bytes = std::size_t(16) << 20;
   } // namespace
+
+
+
+  const double *
+  DeflationSpace::ModelStates::state(const unsigned int a) const
+  {
+    return panels[a / panel_width].data() +
+           std::size_t(a % panel_width) * local_size;
+  }
 
 
 
@@ -67,11 +83,17 @@ namespace ltn
     , Z(std::move(Z_))
   {
     for (const unsigned int k : {0u, 1u})
-      states[k].local_size = equations.new_state(k).locally_owned_size();
+      {
+        states[k].local_size = equations.new_state(k).locally_owned_size();
+        states[k].panel_width =
+          std::max<std::size_t>(1,
+                                block_bytes / sizeof(double) /
+                                  std::max<std::size_t>(1,
+                                                        states[k].local_size));
+      }
     for (unsigned int j = 0; j < Z.size(); ++j)
       states[Z[j].model].columns.push_back(j);
-    for (auto &model : states)
-      model.packed.reserve(model.local_size * model.columns.size());
+    std::array<unsigned int, 2> n_states = {{0, 0}};
     for (auto &z : Z)
       {
         const VectorType state =
@@ -79,8 +101,15 @@ namespace ltn
                             z.controls,
                             z.state_guess.size() ? &z.state_guess : nullptr);
         z.state_guess.clear(); // the state itself is kept
-        auto &packed = states[z.model].packed;
-        packed.insert(packed.end(), state.begin(), state.end());
+        ModelStates &model = states[z.model];
+        if (n_states[z.model]++ % model.panel_width == 0)
+          model.panels.emplace_back().reserve(
+            model.local_size * std::min<std::size_t>(model.panel_width,
+                                                     model.columns.size() + 1 -
+                                                       n_states[z.model]));
+        model.panels.back().insert(model.panels.back().end(),
+                                   state.begin(),
+                                   state.end());
       }
     form_coarse_matrix();
   }
@@ -110,8 +139,7 @@ namespace ltn
                                                    states[k].columns.end(),
                                                    first) -
                                          states[k].columns.begin();
-            std::copy_n(states[k].packed.begin() +
-                          position * states[k].local_size,
+            std::copy_n(states[k].state(position),
                         states[k].local_size,
                         column[k].begin());
             const Observation observed = equations.observe(column);
@@ -179,13 +207,16 @@ namespace ltn
                                      const unsigned int   n_columns,
                                      std::vector<double> &y) const
   {
-    transposed_product(states[k].local_size,
-                       states[k].columns.size(),
-                       n_columns,
-                       states[k].packed.data(),
-                       g,
-                       1.,
-                       y.data());
+    const ModelStates &model = states[k];
+    for (unsigned int p = 0; p < model.panels.size(); ++p)
+      add_transposed_product(model.local_size,
+                             model.panels[p].size() /
+                               std::max<std::size_t>(1, model.local_size),
+                             n_columns,
+                             model.panels[p].data(),
+                             g,
+                             y.data() + p * model.panel_width,
+                             model.columns.size());
   }
 
 
@@ -252,25 +283,31 @@ namespace ltn
     for (const unsigned int k : {0u, 1u})
       if (!states[k].columns.empty())
         {
-          combined[k] = equations.new_state(k);
-          std::vector<double> c_k;
-          for (const unsigned int j : states[k].columns)
-            c_k.push_back(c(j));
-          const types::blas_int rows    = states[k].local_size,
-                                columns = c_k.size(), one_step = 1;
-          const double one = 1., zero = 0.;
-          if (rows > 0)
-            gemv("N",
-                 &rows,
-                 &columns,
-                 &one,
-                 states[k].packed.data(),
-                 &rows,
-                 c_k.data(),
-                 &one_step,
-                 &zero,
-                 combined[k].begin(),
-                 &one_step);
+          combined[k]                 = equations.new_state(k);
+          const ModelStates    &model = states[k];
+          const types::blas_int rows = model.local_size, one_step = 1;
+          for (unsigned int p = 0; p < model.panels.size() && rows > 0; ++p)
+            {
+              std::vector<double> c_p;
+              for (std::size_t a = p * model.panel_width;
+                   a < std::min<std::size_t>((p + 1) * model.panel_width,
+                                             model.columns.size());
+                   ++a)
+                c_p.push_back(c(model.columns[a]));
+              const types::blas_int columns = c_p.size();
+              const double          one = 1., beta = (p == 0 ? 0. : 1.);
+              gemv("N",
+                   &rows,
+                   &columns,
+                   &one,
+                   model.panels[p].data(),
+                   &rows,
+                   c_p.data(),
+                   &one_step,
+                   &beta,
+                   combined[k].begin(),
+                   &one_step);
+            }
         }
     const Observation added = equations.observe(combined);
     for (std::size_t q = 0; q < observed.size(); ++q)

@@ -204,11 +204,7 @@ namespace ltn
       control_components.clear();
       for (const auto i : controls)
         {
-          const Point<dim>      x = position_of(i);
-          std::array<double, 3> p = {{0., 0., 0.}};
-          for (unsigned int d = 0; d < dim; ++d)
-            p[d] = x[d];
-          control_positions.push_back(p);
+          control_positions.push_back(padded<dim>(position_of(i)));
           control_components.push_back(component_of(i));
         }
     }
@@ -223,13 +219,19 @@ namespace ltn
     {
       node_positions.clear();
       for (const auto n : owned_nodes)
-        {
-          const Point<dim>      x = position_of(n);
-          std::array<double, 3> p = {{0., 0., 0.}};
-          for (unsigned int d = 0; d < dim; ++d)
-            p[d] = x[d];
-          node_positions.push_back(p);
-        }
+        node_positions.push_back(padded<dim>(position_of(n)));
+    }
+
+  private:
+    /** @p x with its unused coordinates 0. */
+    template <int dim>
+    static std::array<double, 3>
+    padded(const Point<dim> &x)
+    {
+      std::array<double, 3> p = {{0., 0., 0.}};
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = x[d];
+      return p;
     }
   };
 } // namespace ltn

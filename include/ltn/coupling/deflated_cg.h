@@ -63,8 +63,8 @@ namespace ltn
    * `E = Z^T A Z = (B V Z)^T W (B V Z) + alpha Z^T Z`, replicated on every
    * rank. The states, not their observations, are kept: a column of the
    * local model costs a vector of the local model's size. Each model's states
-   * are packed into one dense matrix of this rank's entries, so that `E` and
-   * the products with `(V Z)^T` are BLAS products, not one distributed inner
+   * are packed into dense panels of this rank's entries, so that `E` and the
+   * products with `(V Z)^T` are BLAS products, not one distributed inner
    * product per pair of columns.
    */
   class DeflationSpace
@@ -122,8 +122,18 @@ namespace ltn
       std::vector<unsigned int> columns;
       /** This rank's entries of a state. */
       std::size_t local_size = 0;
-      /** The states, column-major: `local_size` rows, a column each. */
-      std::vector<double> packed;
+      /**
+       * The states in panels of `panel_width` columns (the last one may be
+       * narrower), column-major with `local_size` rows: a panel is a few MB,
+       * never the whole of a model's states, which would have to exist
+       * beside their vectors while they are packed.
+       */
+      unsigned int                     panel_width = 1;
+      std::vector<std::vector<double>> panels;
+
+      /** The entries of the state in the @p a-th column of the model. */
+      const double *
+      state(const unsigned int a) const;
     };
 
     /** Form `E` and factor it. */
