@@ -93,24 +93,23 @@ namespace ltn
       }
     for (unsigned int j = 0; j < Z.size(); ++j)
       states[Z[j].model].columns.push_back(j);
-    std::array<unsigned int, 2> n_states = {{0, 0}};
-    for (auto &z : Z)
-      {
-        const VectorType state =
-          equations.forward(z.model,
-                            z.controls,
-                            z.state_guess.size() ? &z.state_guess : nullptr);
-        z.state_guess.clear(); // the state itself is kept
-        ModelStates &model = states[z.model];
-        if (n_states[z.model]++ % model.panel_width == 0)
-          model.panels.emplace_back().reserve(
-            model.local_size * std::min<std::size_t>(model.panel_width,
-                                                     model.columns.size() + 1 -
-                                                       n_states[z.model]));
-        model.panels.back().insert(model.panels.back().end(),
-                                   state.begin(),
-                                   state.end());
-      }
+    for (auto &model : states)
+      for (std::size_t a = 0; a < model.columns.size(); ++a)
+        {
+          Column          &z = Z[model.columns[a]];
+          const VectorType state =
+            equations.forward(z.model,
+                              z.controls,
+                              z.state_guess.size() ? &z.state_guess : nullptr);
+          z.state_guess.clear(); // the state itself is kept
+          if (a % model.panel_width == 0)
+            model.panels.emplace_back().reserve(
+              model.local_size * std::min(std::size_t(model.panel_width),
+                                          model.columns.size() - a));
+          model.panels.back().insert(model.panels.back().end(),
+                                     state.begin(),
+                                     state.end());
+        }
     form_coarse_matrix();
   }
 
@@ -123,8 +122,12 @@ namespace ltn
     // observation gives the gradients of the models k >= model(j); the rest
     // of E is its transpose. The gradients of a block of columns are packed
     // and multiplied with the packed states at once.
-    const unsigned int  m = Z.size();
-    std::vector<double> E(std::size_t(m) * m, 0.);
+    const unsigned int        m = Z.size();
+    std::vector<double>       E(std::size_t(m) * m, 0.);
+    std::vector<unsigned int> column_in_model(m);
+    for (const auto &model : states)
+      for (unsigned int a = 0; a < model.columns.size(); ++a)
+        column_in_model[model.columns[a]] = a;
     for (unsigned int first = 0; first < m;)
       {
         std::array<std::vector<double>, 2> gradients;
@@ -133,13 +136,9 @@ namespace ltn
         for (; first < m && (block.empty() || bytes < block_bytes); ++first)
           {
             NormalEquations::States column;
-            const unsigned int      k  = Z[first].model;
-            column[k]                  = equations.new_state(k);
-            const std::size_t position = std::find(states[k].columns.begin(),
-                                                   states[k].columns.end(),
-                                                   first) -
-                                         states[k].columns.begin();
-            std::copy_n(states[k].state(position),
+            const unsigned int      k = Z[first].model;
+            column[k]                 = equations.new_state(k);
+            std::copy_n(states[k].state(column_in_model[first]),
                         states[k].local_size,
                         column[k].begin());
             const Observation observed = equations.observe(column);

@@ -122,8 +122,8 @@ namespace ltn
                 // section 19).
                 for (auto &z : polynomial_control_fields(
                        hessian, *controls.coarse_degree, {nonlocal_model}))
-                  Z.push_back({nonlocal_model,
-                               z.controls.block(nonlocal_model),
+                  Z.push_back({z.model,
+                               z.controls.block(z.model),
                                std::move(z.extension)});
                 for (auto &z : unit_control_fields(hessian, local_model))
                   Z.push_back({local_model, std::move(z)});
