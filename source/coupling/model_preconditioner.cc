@@ -6,6 +6,7 @@ namespace ltn
     : on_surrogate(model.surrogate.m() > 0)
     , node_dofs(model.node_dofs)
     , surrogate_components(model.surrogate_components)
+    , nodes(model.surrogate_nodes)
   {
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -27,7 +28,19 @@ namespace ltn
     // the size of one on the vector Laplacian, whose components ML would
     // aggregate apart while still giving each aggregate a coarse unknown
     // per component of the near null space.
-    amg.initialize(model.surrogate, data);
+    //
+    // Coarsened until at most 200 rows are left, not deal.II's 2000: the
+    // coarse levels of a 3D lattice are dense enough that the direct solve
+    // of a level of a thousand or more rows costs as much as the finest
+    // level's smoothing (the 3e4 bar of benchmarks/scaling, one rank: 17 %
+    // of the run in KLU's triangular solves; with the smaller coarsest
+    // level solves of 13.0 and 14.9 s against 17.7 and 19.6 s, 833 nonlocal
+    // CG iterations against 852).
+    Teuchos::ParameterList              parameters;
+    std::unique_ptr<Epetra_MultiVector> no_modes;
+    data.set_parameters(parameters, no_modes, model.surrogate);
+    parameters.set("coarse: max size", 200);
+    amg.initialize(model.surrogate, parameters);
     node_src.reinit(model.surrogate.locally_owned_domain_indices(),
                     model.communicator);
     node_dst.reinit(node_src);
@@ -46,15 +59,16 @@ namespace ltn
       }
     // The identity at the eliminated components (a Schur complement's
     // vectors are zero there).
-    dst                     = src;
-    const std::size_t nodes = node_src.locally_owned_size();
+    // So it is at the nodes the surrogate leaves out (their rows of the
+    // model are identities).
+    dst = src;
     for (unsigned int c = 0; c < surrogate_components; ++c)
       {
-        for (std::size_t i = 0; i < nodes; ++i)
-          node_src.begin()[i] = src.begin()[node_dofs * i + c];
+        for (std::size_t i = 0; i < nodes.size(); ++i)
+          node_src.begin()[i] = src.begin()[node_dofs * nodes[i] + c];
         amg.vmult(node_dst, node_src);
-        for (std::size_t i = 0; i < nodes; ++i)
-          dst.begin()[node_dofs * i + c] = node_dst.begin()[i];
+        for (std::size_t i = 0; i < nodes.size(); ++i)
+          dst.begin()[node_dofs * nodes[i] + c] = node_dst.begin()[i];
       }
   }
 
@@ -64,6 +78,6 @@ namespace ltn
   ModelPreconditioner::memory_consumption() const
   {
     return amg.memory_consumption() + node_src.memory_consumption() +
-           node_dst.memory_consumption();
+           node_dst.memory_consumption() + nodes.size() * sizeof(unsigned int);
   }
 } // namespace ltn

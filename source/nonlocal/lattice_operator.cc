@@ -154,18 +154,32 @@ namespace ltn
             n_components - std::bitset<8>(shared[p - reach_first]).count();
         }
     stored.compress();
-    IndexSet read;
-    assemble_rows(
-      stored,
-      n_components,
-      rows_of,
-      [this](const types::global_dof_index p) {
-        return all_rows & ~static_cast<unsigned int>(shared[p - reach_first]);
-      },
-      owned_dofs,
-      communicator,
-      own_rows,
-      read);
+    // Apart by subset: applied whole, the eliminated rows would be
+    // computed twice per Schur complement product and the kept rows twice
+    // (the caller discards each subset's other rows).
+    const unsigned int eliminated_rows =
+      all_rows & ~((1u << (n_components - n_eliminated_components)) - 1);
+    for (const unsigned int part : {0u, 1u})
+      {
+        const unsigned int part_rows =
+          part == 0 ? all_rows & ~eliminated_rows : eliminated_rows;
+        IndexSet read;
+        assemble_rows(
+          stored,
+          n_components,
+          rows_of,
+          [this, part_rows](const types::global_dof_index p) {
+            return part_rows &
+                   ~static_cast<unsigned int>(shared[p - reach_first]);
+          },
+          owned_dofs,
+          communicator,
+          own_rows[part],
+          read);
+        // The number of entries over all ranks: every rank skips a part
+        // alike (its product imports ghost values, a collective step).
+        has_own_rows[part] = own_rows[part].n_nonzero_elements() > 0;
+      }
 
     ghosted.reinit(owned_dofs, relevant, communicator);
     importer = std::make_unique<Epetra_Import>(
@@ -376,8 +390,9 @@ namespace ltn
     AssertThrow(error == 0, ExcMessage("importing a vector of other layout"));
     const double *x = ghosted.trilinos_vector()[0];
     double       *y = dst.trilinos_vector()[0];
-    // Rows outside the subset keep whatever dst held; the stored rows are
-    // added whole (they are few).
+    // Rows outside the subset keep whatever dst held; so do the stored rows
+    // outside it, except in the transposed product, whose stored part sums
+    // over all rows.
     with_block_size(n_components,
                     n_eliminated_components,
                     rows,
@@ -390,10 +405,18 @@ namespace ltn
                       else
                         apply_stencil<n, false, r0, r1>(x, y);
                     });
-    if (transpose)
-      own_rows.Tvmult_add(dst, src);
-    else
-      own_rows.vmult_add(dst, src);
+    for (const unsigned int part : {0u, 1u})
+      {
+        const bool in_subset =
+          rows == RowSubset::all ||
+          (rows == RowSubset::kept ? part == 0 : part == 1);
+        if (!has_own_rows[part] || (!transpose && !in_subset))
+          continue;
+        if (transpose)
+          own_rows[part].Tvmult_add(dst, src);
+        else
+          own_rows[part].vmult_add(dst, src);
+      }
   }
 
 
@@ -403,8 +426,9 @@ namespace ltn
   LatticeOperator<dim>::memory_consumption() const
   {
     return shared.size() + interior.size() / 8 +
-           blocks.size() * sizeof(double) + own_rows.memory_consumption() +
-           ghosted.memory_consumption() + offsets.size() * sizeof(LatticeIndex);
+           blocks.size() * sizeof(double) + own_rows[0].memory_consumption() +
+           own_rows[1].memory_consumption() + ghosted.memory_consumption() +
+           offsets.size() * sizeof(LatticeIndex);
   }
 
 

@@ -17,8 +17,9 @@ namespace ltn
   {
     using LatticeIndex    = typename ParticleLattice<dim>::LatticeIndex;
     const double coupling = diagonal / (2 * dim);
-    // Per particle of Omega_n: its free axis neighbours and its diagonal
-    // weight (the number of uncut axis bonds).
+    // Per particle of Omega_n: the surrogate's numbers of its axis
+    // neighbours in Omega_n and its diagonal weight (the number of uncut
+    // axis bonds, collar neighbours included: their values are fixed).
     std::vector<types::global_dof_index> neighbours;
     const auto                           axis_bonds = [&](const auto p) {
       neighbours.clear();
@@ -33,38 +34,45 @@ namespace ltn
               continue;
             ++bonds;
             if (lattice.inside(q))
-              neighbours.push_back(lattice.number(q));
+              neighbours.push_back(lattice.inside_number(q));
           }
       return bonds;
     };
 
-    const auto             n_particles = owned_particles.size();
-    DynamicSparsityPattern dsp(n_particles, n_particles, owned_particles);
+    // Rows for the particles of Omega_n only: the collar's would be
+    // identities, a fifth of the rows of the 10^6 bar's multigrid
+    // hierarchy. A rank's particles of Omega_n have contiguous numbers
+    // among those of Omega_n (ParticleLattice::inside_number).
+    model.surrogate_nodes.clear();
+    IndexSet rows(lattice.n_inside());
     for (const auto p : owned_particles)
-      {
-        dsp.add(p, p);
-        if (lattice.inside(lattice.index(p)))
-          {
-            axis_bonds(p);
-            for (const auto q : neighbours)
-              dsp.add(p, q);
-          }
-      }
-    model.surrogate.reinit(owned_particles,
-                           owned_particles,
-                           dsp,
-                           model.communicator);
+      if (const LatticeIndex index = lattice.index(p); lattice.inside(index))
+        {
+          rows.add_index(lattice.inside_number(index));
+          model.surrogate_nodes.push_back(owned_particles.index_within_set(p));
+        }
+    rows.compress();
+    AssertThrow(rows.is_contiguous(), ExcInternalError());
+
+    DynamicSparsityPattern dsp(rows.size(), rows.size(), rows);
     for (const auto p : owned_particles)
-      {
-        if (!lattice.inside(lattice.index(p)))
-          {
-            model.surrogate.set(p, p, 1.);
-            continue;
-          }
-        model.surrogate.set(p, p, coupling * axis_bonds(p));
-        for (const auto q : neighbours)
-          model.surrogate.set(p, q, -coupling);
-      }
+      if (const LatticeIndex index = lattice.index(p); lattice.inside(index))
+        {
+          const auto row = lattice.inside_number(index);
+          dsp.add(row, row);
+          axis_bonds(p);
+          for (const auto q : neighbours)
+            dsp.add(row, q);
+        }
+    model.surrogate.reinit(rows, rows, dsp, model.communicator);
+    for (const auto p : owned_particles)
+      if (const LatticeIndex index = lattice.index(p); lattice.inside(index))
+        {
+          const auto row = lattice.inside_number(index);
+          model.surrogate.set(row, row, coupling * axis_bonds(p));
+          for (const auto q : neighbours)
+            model.surrogate.set(row, q, -coupling);
+        }
     model.surrogate.compress(VectorOperation::insert);
     model.node_dofs            = n_components;
     model.surrogate_components = n_field_components;

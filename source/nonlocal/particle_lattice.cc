@@ -168,6 +168,31 @@ namespace ltn
 
 
   template <int dim>
+  types::global_dof_index
+  ParticleLattice<dim>::n_inside() const
+  {
+    types::global_dof_index count = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      count *= n[d];
+    return count;
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  ParticleLattice<dim>::inside_number(const LatticeIndex &index) const
+  {
+    Assert(inside(index), ExcInternalError());
+    types::global_dof_index number = 0;
+    for (int d = dim - 1; d >= 0; --d)
+      number = number * n[d] + index[d];
+    return number;
+  }
+
+
+
+  template <int dim>
   DofRole
   ParticleLattice<dim>::role(const LatticeIndex  &index,
                              const Geometry<dim> &geometry) const

@@ -350,12 +350,33 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
   SolverControl             cg_control(200, 1e-10 * b.l2_norm());
   SolverCG<BlockVectorType> cg(cg_control);
   cg.solve(DenseOperator{A}, y, b, PreconditionIdentity());
-  // The same iterates but for round-off: the direction's observation comes
-  // from a recurrence, not from a product.
-  CHECK(control.last_step() + 1 >= cg_control.last_step());
-  CHECK(control.last_step() <= cg_control.last_step() + 1);
   y -= x;
   CHECK(y.l2_norm() < 1e-8 * x.l2_norm());
+
+  // The same iterates but for round-off: the direction's observation comes
+  // from a recurrence, not from a product. Compared at the first steps, not
+  // by the number of steps to the tolerance: this system (alpha = 0) is so
+  // ill-conditioned that the two iterates' round-off differences grow by
+  // about 1000x per step from the fifth step on (1e-15 at step 4, 1e-7 at
+  // step 7, up to 4e-3 before both converge to the same solution), which
+  // moved the step count by two on one machine (38 against 40).
+  for (unsigned int steps = 1; steps <= 4; ++steps)
+    {
+      BlockVectorType early = new_vector();
+      SolverControl   stop(steps, 0.);
+      CHECK_THROWS_AS(
+        solve_deflated_cg(
+          counted.equations, none, identity, b, early, stop, [](double) {}),
+        SolverControl::NoConvergence);
+      BlockVectorType           cg_early = new_vector();
+      SolverControl             cg_stop(steps, 0.);
+      SolverCG<BlockVectorType> cg_steps(cg_stop);
+      CHECK_THROWS_AS(
+        cg_steps.solve(DenseOperator{A}, cg_early, b, PreconditionIdentity()),
+        SolverControl::NoConvergence);
+      cg_early -= early;
+      CHECK(cg_early.l2_norm() < 1e-12 * early.l2_norm());
+    }
 
   // Too few iterations allowed: deal.II's exception, as its solvers throw.
   SolverControl too_few(3, 1e-10 * b.l2_norm());

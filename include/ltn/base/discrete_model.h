@@ -131,8 +131,16 @@ namespace ltn
      * are `eliminated`.
      */
     TrilinosWrappers::SparseMatrix surrogate;
-    unsigned int                   node_dofs            = 1;
-    unsigned int                   surrogate_components = 1;
+    /**
+     * The node of each of this rank's rows of `surrogate`, as its place
+     * among the owned nodes. The surrogate's rows may be only some of the
+     * nodes (a particle model's free ones: the collar's rows are identities
+     * the multigrid need not carry); at the others the preconditioner is
+     * the identity.
+     */
+    std::vector<unsigned int> surrogate_nodes;
+    unsigned int              node_dofs            = 1;
+    unsigned int              surrogate_components = 1;
     /**
      * The owned degrees of freedom whose block of `M` is diagonal and
      * which a preconditioner eliminates first (the dilatation of LPS).

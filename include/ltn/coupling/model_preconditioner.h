@@ -33,9 +33,11 @@ namespace ltn
 
   private:
     /** Is `amg` built on the surrogate (not on the matrix)? */
-    const bool                        on_surrogate;
-    const unsigned int                node_dofs;
-    const unsigned int                surrogate_components;
+    const bool         on_surrogate;
+    const unsigned int node_dofs;
+    const unsigned int surrogate_components;
+    /** DiscreteModel::surrogate_nodes. */
+    const std::vector<unsigned int>   nodes;
     TrilinosWrappers::PreconditionAMG amg;
     /** One component of a vector, over the surrogate's nodes. */
     mutable TrilinosWrappers::MPI::Vector node_src, node_dst;

@@ -34,7 +34,9 @@ namespace ltn
    * still be the shared ones (the dilatation row of LPS in the first horizon
    * of the collar, where the displacement rows are identities); a mask per
    * particle says which. Only the other rows are stored, as a sparse matrix
-   * (`own_rows`). Degrees of freedom are numbered particle by particle,
+   * (`own_rows`, the kept and the eliminated components' rows apart, so
+   * that a product of one subset of rows applies only its own). Degrees of
+   * freedom are numbered particle by particle,
    * `n_components p + c`.
    *
    * `Tvmult` gathers too: `(M^T y)_j = C^T y_j + sum_k B_k^T y_{j - o_k}`
@@ -44,8 +46,8 @@ namespace ltn
    *
    * The last `n_eliminated_components` components of each particle are the
    * model's eliminated degrees of freedom: vmult_rows() computes only their
-   * rows, or only the others', of the shared stencil (the stored rows are
-   * applied whole).
+   * rows, or only the others', of the shared stencil and of the stored
+   * rows (transposed, the stored rows are applied whole).
    */
   template <int dim>
   class LatticeOperator : public MatrixFreeOperator
@@ -134,9 +136,15 @@ namespace ltn
      * Per owned particle: are its rows and those of all its bond partners
      * the shared ones (so that the transposed product needs no tests)?
      */
-    std::vector<bool>                     interior;
-    TrilinosWrappers::SparseMatrix        own_rows;
-    types::global_dof_index               n_own_rows = 0;
+    std::vector<bool> interior;
+    /**
+     * The stored rows of the kept components, then of the eliminated ones
+     * (the Schur complement of section 16 asks for each subset in turn).
+     */
+    std::array<TrilinosWrappers::SparseMatrix, 2> own_rows;
+    /** Does any rank store a row of the kept (eliminated) components? */
+    std::array<bool, 2>                   has_own_rows = {{false, false}};
+    types::global_dof_index               n_own_rows   = 0;
     IndexSet                              owned_dofs, relevant;
     MPI_Comm                              communicator;
     mutable TrilinosWrappers::MPI::Vector ghosted;

@@ -22,15 +22,18 @@ namespace ltn
    * over the axis neighbours `q` of a particle `p` of `Omega_n` whose bond
    * no crack cuts (@p is_cut); neighbours in the collar enter as zero
    * values (the model fixes them by identity rows), so `L` is symmetric.
-   * The rows of the collar are identity rows. At fixed `eps / h` the
+   * Its rows and columns are the particles of `Omega_n` alone
+   * (`model.surrogate_nodes`): the preconditioner is the identity on the
+   * collar, whose rows of the model are identities. At fixed `eps / h` the
    * model's operator is spectrally equivalent to `L` in each of its first
    * @p n_field_components components (the displacement; the rest, the
    * dilatation, are eliminated), which keeps AMG's iteration counts
    * independent of `h`.
    *
-   * Fills `model.surrogate` over this rank's @p owned_particles, one row
-   * per particle, and `model.node_dofs` (@p n_components degrees of
-   * freedom per particle) and `model.surrogate_components`.
+   * Fills `model.surrogate` and `model.surrogate_nodes` over this rank's
+   * @p owned_particles, one row per particle of `Omega_n`, and
+   * `model.node_dofs` (@p n_components degrees of freedom per particle) and
+   * `model.surrogate_components`.
    */
   template <int dim>
   void

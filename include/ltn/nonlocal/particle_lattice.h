@@ -75,6 +75,19 @@ namespace ltn
     bool
     inside(const LatticeIndex &index) const;
 
+    /** The number of particles in `Omega_n`. */
+    types::global_dof_index
+    n_inside() const;
+
+    /**
+     * The number of the particle at @p index among those of `Omega_n`,
+     * lexicographic in its box (`i_0` fastest), as `number` is among all:
+     * both orders agree, so the particles of `Omega_n` in a contiguous
+     * range of numbers have contiguous numbers here.
+     */
+    types::global_dof_index
+    inside_number(const LatticeIndex &index) const;
+
     /**
      * The role of the particle at @p index in a nonlocal model on
      * @p geometry: free in `Omega_n`, a control in the collar inside the
