@@ -1,3 +1,5 @@
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
 #include <ltn/coupling/coupling_system.h>
 
 namespace ltn
@@ -25,6 +27,25 @@ namespace ltn
         overlap_columns[k] = models[k]->owned;
         overlap_columns[k].add_indices(columns.begin(), columns.end());
       }
+
+    points = Utilities::MPI::create_ascending_partitioning(
+      communicator(),
+      overlap.weights.size())[Utilities::MPI::this_mpi_process(communicator())];
+    const auto first = points.is_empty() ? 0 : *points.begin();
+    for (const unsigned int k : {0u, 1u})
+      {
+        const auto &rows =
+          (k == nonlocal_model) ? overlap.nonlocal_rows : overlap.local_rows;
+        DynamicSparsityPattern dsp(points.size(), models[k]->owned.size());
+        for (std::size_t q = 0; q < rows.size(); ++q)
+          for (const auto &entry : rows[q])
+            dsp.add(first + q, entry.first);
+        observation[k].reinit(points, models[k]->owned, dsp, communicator());
+        for (std::size_t q = 0; q < rows.size(); ++q)
+          for (const auto &[i, b] : rows[q])
+            observation[k].add(first + q, i, b);
+        observation[k].compress(VectorOperation::add);
+      }
   }
 
 
@@ -34,24 +55,17 @@ namespace ltn
   CouplingSystem<dim>::mismatch(const VectorType &u_nonlocal,
                                 const VectorType &u_local) const
   {
-    std::vector<double> d(overlap.weights.size());
+    VectorType observed(points, communicator());
+    VectorType d(points, communicator());
     for (const unsigned int k : {0u, 1u})
       {
         const VectorType &field = (k == nonlocal_model) ? u_nonlocal : u_local;
         if (field.size() == 0)
           continue;
-        VectorType ghosted(models[k]->owned,
-                           overlap_columns[k],
-                           models[k]->communicator);
-        ghosted           = field;
-        const double sign = (k == nonlocal_model) ? 1. : -1.;
-        const auto  &rows =
-          (k == nonlocal_model) ? overlap.nonlocal_rows : overlap.local_rows;
-        for (std::size_t q = 0; q < d.size(); ++q)
-          for (const auto &[i, b] : rows[q])
-            d[q] += sign * b * ghosted(i);
+        observation[k].vmult(observed, field);
+        d.add((k == nonlocal_model) ? 1. : -1., observed);
       }
-    return d;
+    return std::vector<double>(d.begin(), d.end());
   }
 
 
@@ -89,9 +103,12 @@ namespace ltn
   {
     // B = [E, -P]: the local rows enter with a minus sign.
     const double sign = (k == nonlocal_model) ? 1. : -1.;
-    return sum_over_rows(k, [&](const std::size_t q, const double b) {
-      return sign * b * overlap.weights[q] * d[q];
-    });
+    VectorType   weighted(points, communicator());
+    for (std::size_t q = 0; q < d.size(); ++q)
+      weighted.begin()[q] = sign * overlap.weights[q] * d[q];
+    VectorType gradient = models[k]->new_vector();
+    observation[k].Tvmult(gradient, weighted);
+    return gradient;
   }
 
 

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/index_set.h>
 
+#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
@@ -106,6 +107,19 @@ namespace ltn
     std::array<IndexSet, 2> overlap_columns;
 
   private:
+    /**
+     * This rank's overlap points in a numbering over all ranks (ranks in
+     * order, each its points in order).
+     */
+    IndexSet points;
+    /**
+     * Per model the unsigned rows `E_q` or `P_q` of this rank's points, as
+     * a distributed sparse matrix (points x the model's degrees of freedom):
+     * Trilinos imports the values the rows read and exports the transposed
+     * product's contributions to other ranks' degrees of freedom.
+     */
+    std::array<TrilinosWrappers::SparseMatrix, 2> observation;
+
     /**
      * `sum_q sum_{(i, b) in row q of B_k} contribution(q, b) e_i` over the
      * owned degrees of freedom of model @p k, for the unsigned rows `E_q`
