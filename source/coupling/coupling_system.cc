@@ -36,7 +36,9 @@ namespace ltn
       {
         const auto &rows =
           (k == nonlocal_model) ? overlap.nonlocal_rows : overlap.local_rows;
-        DynamicSparsityPattern dsp(points.size(), models[k]->owned.size());
+        DynamicSparsityPattern dsp(points.size(),
+                                   models[k]->owned.size(),
+                                   points);
         for (std::size_t q = 0; q < rows.size(); ++q)
           for (const auto &entry : rows[q])
             dsp.add(first + q, entry.first);

@@ -119,17 +119,30 @@ namespace ltn
         }
       }
 
+    const std::size_t         n_offsets = offsets.size();
+    std::vector<std::int64_t> origin(n_offsets);
+    std::vector<std::int64_t> lo(n_offsets), hi(n_offsets);
+    for (auto p = first; p < end;)
+      {
+        segment_start.push_back(p);
+        p = bond_lines(p, origin, lo, hi);
+        bond_origin.insert(bond_origin.end(), origin.begin(), origin.end());
+        bond_lo.insert(bond_lo.end(), lo.begin(), lo.end());
+        bond_hi.insert(bond_hi.end(), hi.begin(), hi.end());
+      }
+    segment_start.push_back(end);
+
     // Particles whose rows and whose bond partners' rows are all shared:
     // the transposed product needs no tests there.
     interior.assign(end - first, false);
-    std::vector<std::int64_t> origin(offsets.size());
-    std::vector<std::int64_t> lo(offsets.size()), hi(offsets.size());
-    for (auto p = first; p < end;)
-      for (const auto line_end = bond_lines(p, origin, lo, hi); p < line_end;
-           ++p)
+    for (std::size_t s = 0; s + 1 < segment_start.size(); ++s)
+      for (auto p = segment_start[s]; p < segment_start[s + 1]; ++p)
         {
-          const std::int64_t i          = p;
-          bool               all_shared = shared[i - reach_first] == all_rows;
+          const std::int64_t *origin     = &bond_origin[s * n_offsets];
+          const std::int64_t *lo         = &bond_lo[s * n_offsets];
+          const std::int64_t *hi         = &bond_hi[s * n_offsets];
+          const std::int64_t  i          = p;
+          bool                all_shared = shared[i - reach_first] == all_rows;
           for (unsigned int k = 0; k < offsets.size() && all_shared; ++k)
             {
               const std::int64_t j = origin[k] + i;
@@ -229,12 +242,10 @@ namespace ltn
   void
   LatticeOperator<dim>::apply_stencil(const double *x, double *y) const
   {
-    const unsigned int        n_offsets = offsets.size();
-    std::vector<std::int64_t> origin(n_offsets);
-    std::vector<std::int64_t> lo(n_offsets), hi(n_offsets);
-    const unsigned char      *mask = shared.data();
-    const std::int64_t        base = reach_first;
-    constexpr unsigned int    full = (1u << n_c) - 1;
+    const unsigned int     n_offsets = offsets.size();
+    const unsigned char   *mask      = shared.data();
+    const std::int64_t     base      = reach_first;
+    constexpr unsigned int full      = (1u << n_c) - 1;
     // The entries (a, b) of the blocks a product needs: the rows a of the
     // subset forward (of B_k), its columns b transposed (of B_{-k}^T, read
     // from the row-major B_{-k} as (b, a)). Transposed, a subset of more
@@ -260,10 +271,12 @@ namespace ltn
               sum[a][b] += block[a * n_c + b] * xj[transpose ? a : b];
           }
       };
-    for (auto p = first; p < end;)
+    for (std::size_t s = 0; s + 1 < segment_start.size(); ++s)
       {
-        const auto line_end = bond_lines(p, origin, lo, hi);
-        for (; p < line_end; ++p)
+        const std::int64_t *origin = &bond_origin[s * n_offsets];
+        const std::int64_t *lo     = &bond_lo[s * n_offsets];
+        const std::int64_t *hi     = &bond_hi[s * n_offsets];
+        for (auto p = segment_start[s]; p < segment_start[s + 1]; ++p)
           {
             const std::int64_t i    = p;
             const double      *xi   = x + (i - base) * n_c;
@@ -427,6 +440,8 @@ namespace ltn
   {
     return shared.size() + interior.size() / 8 +
            blocks.size() * sizeof(double) + own_rows[0].memory_consumption() +
+           (bond_origin.size() + bond_lo.size() + bond_hi.size()) *
+             sizeof(std::int64_t) +
            own_rows[1].memory_consumption() + ghosted.memory_consumption() +
            offsets.size() * sizeof(LatticeIndex);
   }

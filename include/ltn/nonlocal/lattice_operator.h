@@ -118,6 +118,17 @@ namespace ltn
     void
     apply_stencil(const double *x, double *y) const;
 
+    /**
+     * The pieces of lattice lines this rank's particles lie on: piece `s`
+     * holds the particles `[segment_start[s], segment_start[s + 1])`, and
+     * its bond along `o_k` reaches as bond_lines() says, with
+     * `origin = bond_origin[s n + k]`, `lo = bond_lo[s n + k]`,
+     * `hi = bond_hi[s n + k]` (`n` offsets). Built once: looked up in every
+     * product, line by line, it took 3.5 % of a run of the 1e5 bar.
+     */
+    std::vector<types::global_dof_index> segment_start;
+    std::vector<std::int64_t>            bond_origin, bond_lo, bond_hi;
+
     const ParticleLattice<dim>     &lattice;
     const std::vector<LatticeIndex> offsets;
     /** The index of the offset `-o_k`. */
