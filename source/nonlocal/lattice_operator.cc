@@ -172,27 +172,23 @@ namespace ltn
     // (the caller discards each subset's other rows).
     const unsigned int eliminated_rows =
       all_rows & ~((1u << (n_components - n_eliminated_components)) - 1);
+    IndexSet read;
+    assemble_rows(
+      stored,
+      n_components,
+      rows_of,
+      [this](const types::global_dof_index p) {
+        return all_rows & ~static_cast<unsigned int>(shared[p - reach_first]);
+      },
+      {all_rows & ~eliminated_rows, eliminated_rows},
+      owned_dofs,
+      communicator,
+      {&own_rows[0], &own_rows[1]},
+      read);
+    // The number of entries over all ranks: every rank skips a part alike
+    // (its product imports ghost values, a collective step).
     for (const unsigned int part : {0u, 1u})
-      {
-        const unsigned int part_rows =
-          part == 0 ? all_rows & ~eliminated_rows : eliminated_rows;
-        IndexSet read;
-        assemble_rows(
-          stored,
-          n_components,
-          rows_of,
-          [this, part_rows](const types::global_dof_index p) {
-            return part_rows &
-                   ~static_cast<unsigned int>(shared[p - reach_first]);
-          },
-          owned_dofs,
-          communicator,
-          own_rows[part],
-          read);
-        // The number of entries over all ranks: every rank skips a part
-        // alike (its product imports ghost values, a collective step).
-        has_own_rows[part] = own_rows[part].n_nonzero_elements() > 0;
-      }
+      has_own_rows[part] = own_rows[part].n_nonzero_elements() > 0;
 
     ghosted.reinit(owned_dofs, relevant, communicator);
     importer = std::make_unique<Epetra_Import>(
@@ -503,9 +499,10 @@ namespace ltn
           [n_components](types::global_dof_index) {
             return (1u << n_components) - 1;
           },
+          {(1u << n_components) - 1},
           model.owned,
           model.communicator,
-          model.matrix,
+          {&model.matrix},
           model.relevant);
       }
   }

@@ -10,15 +10,25 @@ namespace ltn
     const unsigned int n_components,
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
     const std::function<unsigned int(types::global_dof_index)> &stored_rows_of,
+    const std::vector<unsigned int>                            &row_groups,
     const IndexSet                                             &owned_dofs,
     const MPI_Comm                                              communicator,
-    TrilinosWrappers::SparseMatrix                             &matrix,
+    const std::vector<TrilinosWrappers::SparseMatrix *>        &matrices,
     IndexSet                                                   &relevant)
   {
+    AssertDimension(row_groups.size(), matrices.size());
     const auto n_dofs = owned_dofs.size();
+    // The group of each component's rows.
+    std::vector<unsigned int> group(n_components, 0);
+    for (unsigned int g = 0; g < row_groups.size(); ++g)
+      for (unsigned int c = 0; c < n_components; ++c)
+        if ((row_groups[g] >> c) & 1u)
+          group[c] = g;
     // One pass for the pattern of the owned rows and the ghosts they reach,
     // one for the values: the rows are cheaper to rebuild than to keep.
-    DynamicSparsityPattern               dsp(n_dofs, n_dofs, owned_dofs);
+    std::vector<DynamicSparsityPattern> dsp(matrices.size());
+    for (auto &pattern : dsp)
+      pattern.reinit(n_dofs, n_dofs, owned_dofs);
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
     ParticleRows                         rows(n_components);
@@ -34,15 +44,17 @@ namespace ltn
               for (const auto &entry : rows[c])
                 columns.push_back(entry.first);
               std::sort(columns.begin(), columns.end());
-              dsp.add_entries(n_components * p + c,
-                              columns.begin(),
-                              columns.end(),
-                              true);
+              dsp[group[c]].add_entries(n_components * p + c,
+                                        columns.begin(),
+                                        columns.end(),
+                                        true);
               relevant.add_indices(columns.begin(), columns.end());
             }
       }
     relevant.compress();
-    matrix.reinit(owned_dofs, owned_dofs, dsp, communicator);
+    for (unsigned int g = 0; g < matrices.size(); ++g)
+      matrices[g]->reinit(owned_dofs, owned_dofs, dsp[g], communicator);
+    dsp.clear();
     for (const auto p : particles)
       {
         rows_of(p, rows);
@@ -57,12 +69,13 @@ namespace ltn
                   columns.push_back(column);
                   values.push_back(value);
                 }
-              matrix.set(n_components * p + c,
-                         columns.size(),
-                         columns.data(),
-                         values.data());
+              matrices[group[c]]->set(n_components * p + c,
+                                      columns.size(),
+                                      columns.data(),
+                                      values.data());
             }
       }
-    matrix.compress(VectorOperation::insert);
+    for (TrilinosWrappers::SparseMatrix *matrix : matrices)
+      matrix->compress(VectorOperation::insert);
   }
 } // namespace ltn

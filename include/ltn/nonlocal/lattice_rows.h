@@ -19,12 +19,15 @@ namespace ltn
     std::vector<std::vector<std::pair<types::global_dof_index, double>>>;
 
   /**
-   * Assemble into @p matrix (rows and columns over @p owned_dofs) the rows
-   * of @p particles, this rank's, @p n_components degrees of freedom each
-   * (numbered `n_components p + c`), each row given by @p rows_of, of the
-   * components in the mask @p stored_rows_of (bit `c` for component `c`);
-   * the other rows stay empty. @p relevant becomes @p owned_dofs and the
-   * columns the rows read.
+   * Assemble the rows of @p particles, this rank's, @p n_components degrees
+   * of freedom each (numbered `n_components p + c`), each row given by
+   * @p rows_of, of the components in the mask @p stored_rows_of (bit `c`
+   * for component `c`): a row of component `c` goes into `*matrices[g]` for
+   * the group `g` whose mask @p row_groups[g] holds `c` (rows and columns
+   * over @p owned_dofs); the other rows stay empty. Each particle's rows are
+   * built twice whatever the number of groups: once for the patterns, once
+   * for the values. @p relevant becomes @p owned_dofs and the columns the
+   * rows read.
    */
   void
   assemble_rows(
@@ -32,8 +35,9 @@ namespace ltn
     const unsigned int n_components,
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
     const std::function<unsigned int(types::global_dof_index)> &stored_rows_of,
+    const std::vector<unsigned int>                            &row_groups,
     const IndexSet                                             &owned_dofs,
     const MPI_Comm                                              communicator,
-    TrilinosWrappers::SparseMatrix                             &matrix,
+    const std::vector<TrilinosWrappers::SparseMatrix *>        &matrices,
     IndexSet                                                   &relevant);
 } // namespace ltn
