@@ -103,6 +103,8 @@ namespace ltn
       1,
       1,
       diagonal,
+      1., // the moment conditions make the long-wave limit the Laplacian
+      spacing,
       [](const Point<dim> &, const Point<dim> &) { return false; },
       model);
     model.eliminated = IndexSet(model.owned.size());

@@ -329,6 +329,8 @@ namespace ltn
       n_components,
       dim,
       diagonal,
+      coefficient_B / (dim * (dim + 2)), // the shear modulus
+      spacing,
       [this](const Point<dim> &x, const Point<dim> &y) {
         return near_crack(x) && is_cut(x, y);
       },

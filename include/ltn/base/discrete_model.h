@@ -139,8 +139,16 @@ namespace ltn
      * the identity.
      */
     std::vector<unsigned int> surrogate_nodes;
-    unsigned int              node_dofs            = 1;
-    unsigned int              surrogate_components = 1;
+    /**
+     * The weight of the surrogate's inverse diagonal that the preconditioner
+     * adds to its multigrid cycle (doc/discretization.md, section 16): the
+     * surrogate stands in for `M` at long wavelengths, its diagonal at short
+     * ones, where a nonlocal operator is nearly diagonal. Zero without a
+     * surrogate.
+     */
+    double       short_wave_weight    = 0;
+    unsigned int node_dofs            = 1;
+    unsigned int surrogate_components = 1;
     /**
      * The owned degrees of freedom whose block of `M` is diagonal and
      * which a preconditioner eliminates first (the dilatation of LPS).

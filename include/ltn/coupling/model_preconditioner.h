@@ -13,8 +13,9 @@ namespace ltn
    * The preconditioner of a model's iterative solver (doc/discretization.md,
    * section 16): algebraic multigrid (Trilinos ML, one V-cycle) on the
    * model's matrix, or on its scalar surrogate, one V-cycle per component
-   * the surrogate stands in for. Where the model eliminates degrees of
-   * freedom (SchurComplement) it stands in for the inverse of the Schur
+   * the surrogate stands in for, plus `DiscreteModel::short_wave_weight`
+   * times the surrogate's inverse diagonal. Where the model eliminates degrees
+   * of freedom (SchurComplement) it stands in for the inverse of the Schur
    * complement, and is the identity at the eliminated ones. The same
    * hierarchy serves `M` and `M^T`.
    */
@@ -41,5 +42,7 @@ namespace ltn
     TrilinosWrappers::PreconditionAMG amg;
     /** One component of a vector, over the surrogate's nodes. */
     mutable TrilinosWrappers::MPI::Vector node_src, node_dst;
+    /** `short_wave_weight` over the surrogate's diagonal, per owned row. */
+    std::vector<double> short_wave_scaling;
   };
 } // namespace ltn

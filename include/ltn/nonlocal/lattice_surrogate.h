@@ -30,10 +30,19 @@ namespace ltn
    * dilatation, are eliminated), which keeps AMG's iteration counts
    * independent of `h`.
    *
+   * `L` is right at long wavelengths only up to a factor: the model's
+   * operator tends to @p long_wave_modulus times the Laplacian there (the
+   * diffusion coefficient; for LPS the shear modulus, its softest waves),
+   * `L` to `diagonal h^2 / (2 dim)` times it. At short wavelengths, where
+   * `L` keeps growing, a nonlocal operator levels off at its diagonal. The
+   * preconditioner therefore adds the inverse of `L`'s diagonal, weighted
+   * by `model.short_wave_weight` = 0.6 times the ratio of the two long-wave
+   * moduli, to its cycle on `L` (doc/discretization.md, section 16).
+   *
    * Fills `model.surrogate` and `model.surrogate_nodes` over this rank's
-   * @p owned_particles, one row per particle of `Omega_n`, and
-   * `model.node_dofs` (@p n_components degrees of freedom per particle) and
-   * `model.surrogate_components`.
+   * @p owned_particles, one row per particle of `Omega_n`,
+   * `model.short_wave_weight`, and `model.node_dofs` (@p n_components
+   * degrees of freedom per particle) and `model.surrogate_components`.
    */
   template <int dim>
   void
@@ -43,6 +52,8 @@ namespace ltn
     const unsigned int          n_components,
     const unsigned int          n_field_components,
     const double                diagonal,
+    const double                long_wave_modulus,
+    const double                spacing,
     const std::function<bool(const Point<dim> &, const Point<dim> &)> &is_cut,
     DiscreteModel                                                     &model);
 } // namespace ltn
