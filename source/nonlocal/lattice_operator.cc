@@ -267,6 +267,28 @@ namespace ltn
               sum[a][b] += block[a * n_c + b] * xj[transpose ? a : b];
           }
       };
+    // Forward, several consecutive particles of a line with the same shared
+    // rows at once: their bonds use the same blocks, and their partners are
+    // consecutive too. One running sum per particle and entry gives the FMA
+    // units independent chains; one particle at a time, the product waits
+    // on the latency of each bond's additions.
+    constexpr unsigned int                                      group = 4;
+    std::array<std::array<std::array<double, n_c>, n_c>, group> group_sum;
+    const auto add_group = [&group_sum](const double      *block,
+                                        const double      *xj,
+                                        const unsigned int used) {
+      for (int a = r0; a < r1; ++a)
+        {
+          if (used != full && !((used >> a) & 1u))
+            continue;
+          for (int b = 0; b < n_c; ++b)
+            {
+              const double entry = block[a * n_c + b];
+              for (unsigned int g = 0; g < group; ++g)
+                group_sum[g][a][b] += entry * xj[g * n_c + b];
+            }
+        }
+    };
     for (std::size_t s = 0; s + 1 < segment_start.size(); ++s)
       {
         const std::int64_t *origin = &bond_origin[s * n_offsets];
@@ -277,6 +299,34 @@ namespace ltn
             const std::int64_t i    = p;
             const double      *xi   = x + (i - base) * n_c;
             const unsigned int rows = mask[i - base];
+            if (!transpose && rows != 0 && group > 1 &&
+                p + group <= segment_start[s + 1] &&
+                std::all_of(mask + (i - base) + 1,
+                            mask + (i - base) + group,
+                            [rows](const unsigned char m) {
+                              return m == rows;
+                            }))
+              {
+                for (auto &particle : group_sum)
+                  for (auto &row : particle)
+                    row.fill(0.);
+                add_group(&blocks[n_offsets * n_c * n_c], xi, rows);
+                for (unsigned int k = 0; k < n_offsets; ++k)
+                  add_group(&blocks[k * n_c * n_c],
+                            x + (origin[k] + i - base) * n_c,
+                            rows);
+                double *yi = y + (i - static_cast<std::int64_t>(first)) * n_c;
+                for (unsigned int g = 0; g < group; ++g)
+                  for (int a = a0; a < a1; ++a)
+                    {
+                      double total = 0;
+                      for (int b = 0; b < n_c; ++b)
+                        total += group_sum[g][a][b];
+                      yi[g * n_c + a] = total;
+                    }
+                p += group - 1;
+                continue;
+              }
             for (auto &row : sum)
               row.fill(0.);
             // Read per particle: hoisted out of the loops, it made GCC 12
