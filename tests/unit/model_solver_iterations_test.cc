@@ -97,17 +97,21 @@ namespace
   }
   /**
    * GMRES and CG on a model: less than 1.5x more iterations at h0/8 than at
-   * h0 = 1/16.
+   * h0 = 1/16, and at most @p most at every h (the preconditioner's
+   * short-wave term, doc/discretization.md section 16: without it these
+   * scenes take 28-31).
    */
   template <typename MakeParticles>
   void
-  check_growth(const MakeParticles &make)
+  check_growth(const MakeParticles &make, const unsigned int most)
   {
     for (const bool conjugate_gradients : {false, true})
       {
         const auto counts =
           iteration_counts(1. / 16, make, conjugate_gradients);
         CHECK(counts.back() < 1.5 * counts.front());
+        for (const unsigned int count : counts)
+          CHECK(count <= most);
       }
   }
 } // namespace
@@ -129,7 +133,7 @@ TEST_CASE("particle model Krylov iterations do not grow with 1/h at fixed "
                           matrix_free);
       return particles;
     };
-    check_growth(make);
+    check_growth(make, 16); // measured 12, 13, 13, 14
   }
   SECTION("2D LPS with a crack, eps = 2h")
   {
@@ -155,7 +159,7 @@ TEST_CASE("particle model Krylov iterations do not grow with 1/h at fixed "
                           matrix_free);
       return particles;
     };
-    check_growth(make);
+    check_growth(make, 25); // measured 20, 20 or 21, 22, 23
   }
 }
 
