@@ -42,7 +42,10 @@ scalable = ["Coupling/Model solvers=preconditioned gmres",
             "Coupling/Relative tolerance=1e-10",
             "Coupling/Model solver tolerance=1e-12"]
 # The same with CG on the particle model's free block (doc §16).
-scalable_cg = scalable + ["Coupling/Model solvers=preconditioned cg"]
+# The finite element model factorized: one local solve per local coarse
+# column and two per outer iteration, on a coarse mesh.
+scalable_cg = scalable + ["Coupling/Model solvers=preconditioned cg",
+                          "Coupling/Local model solver=direct"]
 # The full-space GMRES solves each model loosely inside its preconditioner.
 full_space_gmres = (["Coupling/Method=full space gmres"] + scalable +
                     ["Coupling/Model solver tolerance=1e-1"])

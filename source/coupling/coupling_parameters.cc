@@ -83,6 +83,16 @@ namespace ltn
                         "unknowns, whose block is symmetric positive "
                         "definite, for forward and adjoint solves alike; "
                         "the finite element model keeps GMRES).");
+      prm.declare_entry("Local model solver",
+                        "same",
+                        Patterns::Selection("same|direct"),
+                        "`same`: the finite element model is solved as "
+                        "Model solvers says; `direct`: it is factorized "
+                        "(MUMPS) whatever the particle model's solver. A "
+                        "coupled solve needs one local solve per local "
+                        "control of the coarse level and two per CG "
+                        "iteration; on a coarse mesh a factorization makes "
+                        "them cheap.");
       prm.declare_entry("Model solver tolerance",
                         "1e-13",
                         Patterns::Double(0),
@@ -129,6 +139,8 @@ namespace ltn
         prm.get("Model solvers") == "preconditioned cg";
       model_solvers.relative_tolerance =
         prm.get_double("Model solver tolerance");
+      model_solvers.direct_local_model =
+        prm.get("Local model solver") == "direct";
       model_solvers.max_iterations = max_iterations;
       check_input(model_solvers.relative_tolerance > 0 &&
                     model_solvers.relative_tolerance < 1,

@@ -22,7 +22,7 @@ namespace ltn
                                       model_solvers);
     const ModelSolver local_solver(*system.models[local_model],
                                    true,
-                                   model_solvers);
+                                   model_solvers.local());
     const std::array<const ModelSolver *, 2> solvers = {
       {&nonlocal_solver, &local_solver}};
     // The control preconditioner's explicit blocks are formed from Hessian

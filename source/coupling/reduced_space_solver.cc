@@ -53,7 +53,7 @@ namespace ltn
         std::min(inner.relative_tolerance, 1e-2 * relative_tolerance);
     Timer        solver_setup;
     ModelSolver  nonlocal_solver(*system.models[nonlocal_model], true, inner);
-    ModelSolver  local_solver(*system.models[local_model], true, inner);
+    ModelSolver  local_solver(*system.models[local_model], true, inner.local());
     const double solver_setup_seconds = solver_setup.wall_time();
     const ReducedHessian<dim> hessian(system,
                                       {{&nonlocal_solver, &local_solver}});

@@ -1,5 +1,6 @@
 // The scalable solvers (reduced-space CG with each model's AMG-preconditioned
-// GMRES or, on the particle model, CG inside, and full-space flexible GMRES
+// GMRES or, on the particle model, CG inside, the finite element model
+// iterative or factorized, and full-space flexible GMRES
 // preconditioned by block elimination with those GMRES to a loose tolerance;
 // the particle operators matrix-free) reproduce the direct solvers' solution to
 // 1e-8 relative on patch and convergence scenes, at every level, for diffusion
@@ -18,6 +19,9 @@ namespace
     {"Coupling/Method=reduced space cg"},
     {"Coupling/Method=reduced space cg",
      "Coupling/Model solvers=preconditioned cg"},
+    {"Coupling/Method=reduced space cg",
+     "Coupling/Model solvers=preconditioned cg",
+     "Coupling/Local model solver=direct"},
     {"Coupling/Method=full space gmres",
      "Coupling/Model solver tolerance=1e-2"}};
 

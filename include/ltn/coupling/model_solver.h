@@ -35,6 +35,22 @@ namespace ltn
     /** The residual reduction relative to the right-hand side. */
     double       relative_tolerance = 1e-12;
     unsigned int max_iterations     = 1000;
+    /**
+     * Factorize the local (finite element) model however the particle model
+     * is solved: its mesh is coarse wherever the coupling is used, and a
+     * coupled solve needs one local solve per local coarse column.
+     */
+    bool direct_local_model = false;
+
+    /** The settings of the local model's solver. */
+    ModelSolverSettings
+    local() const
+    {
+      ModelSolverSettings settings = *this;
+      if (direct_local_model)
+        settings.iterative = false;
+      return settings;
+    }
   };
 
   /** How often a model's solver ran and how many iterations it took. */
