@@ -46,7 +46,7 @@ namespace ltn
     node_dst.reinit(node_src);
     // The short-wave term (doc/discretization.md, section 16): on the 3D
     // cracked bar of benchmarks/scaling it took the nonlocal CG iterations
-    // from 831 to 600 (1e4) and from 877 to 687 (1e5).
+    // from 831 to 600 (1e4) and from 877 to 686 (1e5).
     const IndexSet &rows = model.surrogate.locally_owned_range_indices();
     short_wave_scaling.resize(nodes.size());
     for (std::size_t i = 0; i < nodes.size(); ++i)

@@ -299,8 +299,7 @@ namespace ltn
             const std::int64_t i    = p;
             const double      *xi   = x + (i - base) * n_c;
             const unsigned int rows = mask[i - base];
-            if (!transpose && rows != 0 && group > 1 &&
-                p + group <= segment_start[s + 1] &&
+            if (!transpose && rows != 0 && p + group <= segment_start[s + 1] &&
                 std::all_of(mask + (i - base) + 1,
                             mask + (i - base) + group,
                             [rows](const unsigned char m) {
