@@ -11,6 +11,7 @@ namespace ltn
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
     const std::function<unsigned int(types::global_dof_index)> &stored_rows_of,
     const std::vector<unsigned int>                            &row_groups,
+    const bool                                                  only_stored_rows,
     const IndexSet                                             &owned_dofs,
     const MPI_Comm                                              communicator,
     const std::vector<TrilinosWrappers::SparseMatrix *>        &matrices,
@@ -24,11 +25,27 @@ namespace ltn
       for (unsigned int c = 0; c < n_components; ++c)
         if ((row_groups[g] >> c) & 1u)
           group[c] = g;
+    // Each matrix's rows: all owned ones, or only those it stores.
+    std::vector<IndexSet> row_sets(matrices.size(), owned_dofs);
+    if (only_stored_rows)
+      {
+        for (auto &rows : row_sets)
+          rows = IndexSet(n_dofs);
+        for (const auto p : particles)
+          {
+            const unsigned int stored = stored_rows_of(p);
+            for (unsigned int c = 0; c < n_components; ++c)
+              if ((stored >> c) & 1u)
+                row_sets[group[c]].add_index(n_components * p + c);
+          }
+        for (auto &rows : row_sets)
+          rows.compress();
+      }
     // One pass for the pattern of the owned rows and the ghosts they reach,
     // one for the values: the rows are cheaper to rebuild than to keep.
     std::vector<DynamicSparsityPattern> dsp(matrices.size());
-    for (auto &pattern : dsp)
-      pattern.reinit(n_dofs, n_dofs, owned_dofs);
+    for (unsigned int g = 0; g < matrices.size(); ++g)
+      dsp[g].reinit(n_dofs, n_dofs, row_sets[g]);
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
     ParticleRows                         rows(n_components);
@@ -53,7 +70,7 @@ namespace ltn
       }
     relevant.compress();
     for (unsigned int g = 0; g < matrices.size(); ++g)
-      matrices[g]->reinit(owned_dofs, owned_dofs, dsp[g], communicator);
+      matrices[g]->reinit(row_sets[g], owned_dofs, dsp[g], communicator);
     dsp.clear();
     for (const auto p : particles)
       {

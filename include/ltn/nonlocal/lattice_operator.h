@@ -153,6 +153,14 @@ namespace ltn
      * (the Schur complement of section 16 asks for each subset in turn).
      */
     std::array<TrilinosWrappers::SparseMatrix, 2> own_rows;
+    /**
+     * Per part: a product with its stored rows, over those rows only, and
+     * the rows' indices into this rank's owned values.
+     */
+    mutable std::array<TrilinosWrappers::MPI::Vector, 2> own_rows_values;
+    std::array<std::vector<unsigned int>, 2>             own_rows_entries;
+    /** A transposed product with stored rows, over the owned values. */
+    mutable TrilinosWrappers::MPI::Vector own_rows_transposed;
     /** Does any rank store a row of the kept (eliminated) components? */
     std::array<bool, 2>                   has_own_rows = {{false, false}};
     types::global_dof_index               n_own_rows   = 0;
