@@ -190,7 +190,7 @@ namespace ltn
     // (its product imports ghost values, a collective step).
     for (const unsigned int part : {0u, 1u})
       {
-        has_own_rows[part] = own_rows[part].n_nonzero_elements() > 0;
+        has_own_rows[part]   = own_rows[part].n_nonzero_elements() > 0;
         const IndexSet &rows = own_rows[part].locally_owned_range_indices();
         own_rows_values[part].reinit(rows, communicator);
         own_rows_entries[part].clear();

@@ -11,11 +11,11 @@ namespace ltn
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
     const std::function<unsigned int(types::global_dof_index)> &stored_rows_of,
     const std::vector<unsigned int>                            &row_groups,
-    const bool                                                  only_stored_rows,
-    const IndexSet                                             &owned_dofs,
-    const MPI_Comm                                              communicator,
-    const std::vector<TrilinosWrappers::SparseMatrix *>        &matrices,
-    IndexSet                                                   &relevant)
+    const bool                                           only_stored_rows,
+    const IndexSet                                      &owned_dofs,
+    const MPI_Comm                                       communicator,
+    const std::vector<TrilinosWrappers::SparseMatrix *> &matrices,
+    IndexSet                                            &relevant)
   {
     AssertDimension(row_groups.size(), matrices.size());
     const auto n_dofs = owned_dofs.size();
