@@ -97,7 +97,8 @@ namespace ltn
                         "1e-13",
                         Patterns::Double(0),
                         "Residual reduction, relative to the right-hand "
-                        "side, at which a model's GMRES or CG stops. Inside "
+                        "side (CG: the free block's), at which a model's "
+                        "GMRES or CG stops. Inside "
                         "the reduced-space CG this is the tolerance of its "
                         "first iteration, relaxed as the CG's residual falls "
                         "(at most to 1e-1): keep it about 1e-2 times the "

@@ -32,7 +32,10 @@ namespace ltn
      * for `M` and `M^T` alike; GMRES elsewhere.
      */
     bool conjugate_gradients = false;
-    /** The residual reduction relative to the right-hand side. */
+    /**
+     * The residual reduction relative to the right-hand side (CG: to the
+     * free block's, doc/discretization.md, section 16).
+     */
     double       relative_tolerance = 1e-12;
     unsigned int max_iterations     = 1000;
     /**
@@ -163,7 +166,8 @@ namespace ltn
     /**
      * The iterative solve of `M x = b` (@p transpose: `M^T x = b`) by CG on
      * the free block (doc/discretization.md, section 16), from the initial
-     * guess @p x.
+     * guess @p x, to the current tolerance relative to the free block's
+     * right-hand side (set in @p control).
      */
     void
     solve_free_block(const bool                           transpose,
