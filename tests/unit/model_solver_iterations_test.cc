@@ -4,7 +4,9 @@
 // constant as h halves three times, for nonlocal diffusion and LPS (with a
 // crack), matrix-free; and their solutions equal the direct solver's. A
 // forward solve started from its exact state, a rigid motion with a crack,
-// takes no iterations.
+// takes no iterations. CG takes the same iterations and gives the same state
+// whatever the units of the moduli (with the old tolerance relative to the
+// right-hand side's control values: 20 against 41).
 
 #include <ltn/coupling/model_solver.h>
 #include <ltn/nonlocal/particle_diffusion.h>
@@ -237,4 +239,70 @@ TEST_CASE("a particle model's forward solve started from a rigid motion at "
   difference = from_guess;
   difference -= guess;
   CHECK(difference.linfty_norm() < 1e-12 * from_zero.linfty_norm());
+}
+
+
+
+TEST_CASE("a particle model's CG takes the same iterations whatever the "
+          "units of its moduli",
+          "[solvers][unit]")
+{
+  // A forward solve from rough controls: its right-hand side is
+  // displacements at the controls, its free rows' residual forces. With the
+  // tolerance relative to |b| (the controls) a stiffer material in other
+  // units took more iterations; relative to the free block's right-hand
+  // side the solve is the same, and its state too.
+  Geometry<2> geometry;
+  geometry.body.upper            = Point<2>(2, 1);
+  geometry.nonlocal_region.lower = Point<2>(0.25, 0.25);
+  geometry.nonlocal_region.upper = Point<2>(1.25, 0.75);
+  geometry.overlap_width         = 0.125;
+  const double h                 = 1. / 32;
+  Crack<2>     crack;
+  crack.corners[0] = Point<2>(0.75 + h / 2, 0.375);
+  crack.corners[1] = Point<2>(0.75 + h / 2, 0.625);
+
+  std::vector<unsigned int>                  iterations;
+  std::vector<TrilinosWrappers::MPI::Vector> states;
+  for (const double modulus : {1., 2e11})
+    {
+      ParticleElasticity<2> particles(geometry,
+                                      Kernel("constant", 0.5, 2, 2 * h),
+                                      h,
+                                      modulus,
+                                      modulus,
+                                      std::vector<Crack<2>>{crack},
+                                      MPI_COMM_WORLD);
+      particles.assemble(Functions::ZeroFunction<2>(2),
+                         Functions::ZeroFunction<2>(2),
+                         true);
+      const DiscreteModel &model = particles.get_model();
+      ModelSolverSettings  settings;
+      settings.iterative           = true;
+      settings.conjugate_gradients = true;
+      settings.relative_tolerance  = 1e-8;
+      const ModelSolver solver(model, false, settings);
+
+      auto                          theta = solver.new_control_vector();
+      const types::global_dof_index first_control =
+        model.control_positions.empty() ?
+          0 :
+          theta.locally_owned_elements().nth_index_in_set(0);
+      for (std::size_t i = 0; i < model.control_positions.size(); ++i)
+        {
+          const auto &x = model.control_positions[i];
+          theta(first_control + i) =
+            std::sin(40 * x[0] + 7 * model.control_components[i]) *
+            std::cos(30 * x[1]);
+        }
+      theta.compress(VectorOperation::insert);
+      states.push_back(solver.forward(theta, false));
+      iterations.push_back(solver.statistics().iterations);
+    }
+  INFO("iterations " << iterations[0] << " and " << iterations[1]);
+  CHECK(iterations[0] > 0);
+  CHECK(iterations[0] == iterations[1]);
+  auto difference = states[1];
+  difference -= states[0];
+  CHECK(difference.linfty_norm() < 1e-6 * states[0].linfty_norm());
 }
