@@ -14,6 +14,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <functional>
 #include <iostream>
 
 using namespace ltn;
@@ -116,6 +118,49 @@ namespace
           CHECK(count <= most);
       }
   }
+
+  /**
+   * Omega_n inside a 2 x 1 body, its collar the controls, and a crack in
+   * its middle, halfway between lattice planes of spacing @p h.
+   */
+  ParticleElasticity<2>
+  cracked_inner_region(const double h, const double modulus)
+  {
+    Geometry<2> geometry;
+    geometry.body.upper            = Point<2>(2, 1);
+    geometry.nonlocal_region.lower = Point<2>(0.25, 0.25);
+    geometry.nonlocal_region.upper = Point<2>(1.25, 0.75);
+    geometry.overlap_width         = 0.125;
+    Crack<2> crack;
+    crack.corners[0] = Point<2>(0.75 + h / 2, 0.375);
+    crack.corners[1] = Point<2>(0.75 + h / 2, 0.625);
+    return ParticleElasticity<2>(geometry,
+                                 Kernel("constant", 0.5, 2, 2 * h),
+                                 h,
+                                 modulus,
+                                 modulus,
+                                 std::vector<Crack<2>>{crack},
+                                 MPI_COMM_WORLD);
+  }
+
+  /** The controls of @p model set to @p value (position, component). */
+  TrilinosWrappers::MPI::Vector
+  controls_of(const ModelSolver                         &solver,
+              const DiscreteModel                       &model,
+              const std::function<double(const std::array<double, 3> &,
+                                         unsigned int)> &value)
+  {
+    auto                          theta = solver.new_control_vector();
+    const types::global_dof_index first_control =
+      model.control_positions.empty() ?
+        0 :
+        theta.locally_owned_elements().nth_index_in_set(0);
+    for (std::size_t i = 0; i < model.control_positions.size(); ++i)
+      theta(first_control + i) =
+        value(model.control_positions[i], model.control_components[i]);
+    theta.compress(VectorOperation::insert);
+    return theta;
+  }
 } // namespace
 
 
@@ -171,24 +216,10 @@ TEST_CASE("a particle model's forward solve started from a rigid motion at "
           "every particle takes no iterations, with a crack",
           "[solvers][unit]")
 {
-  // Omega_n inside the body, its collar the controls; the crack cuts bonds
-  // in the middle of Omega_n, which a rotation does not stretch.
-  Geometry<2> geometry;
-  geometry.body.upper            = Point<2>(2, 1);
-  geometry.nonlocal_region.lower = Point<2>(0.25, 0.25);
-  geometry.nonlocal_region.upper = Point<2>(1.25, 0.75);
-  geometry.overlap_width         = 0.125;
-  const double h                 = 1. / 32;
-  Crack<2>     crack;
-  crack.corners[0] = Point<2>(0.75 + h / 2, 0.375);
-  crack.corners[1] = Point<2>(0.75 + h / 2, 0.625);
-  ParticleElasticity<2> particles(geometry,
-                                  Kernel("constant", 0.5, 2, 2 * h),
-                                  h,
-                                  1.,
-                                  1.,
-                                  std::vector<Crack<2>>{crack},
-                                  MPI_COMM_WORLD);
+  // The crack cuts bonds in the middle of Omega_n, which a rotation does
+  // not stretch.
+  const double          h         = 1. / 32;
+  ParticleElasticity<2> particles = cracked_inner_region(h, 1.);
   particles.assemble(Functions::ZeroFunction<2>(2),
                      Functions::ZeroFunction<2>(2),
                      true);
@@ -207,15 +238,7 @@ TEST_CASE("a particle model's forward solve started from a rigid motion at "
   settings.relative_tolerance  = 1e-10;
   const ModelSolver solver(model, false, settings);
 
-  auto                          theta = solver.new_control_vector();
-  const types::global_dof_index first_control =
-    model.control_positions.empty() ?
-      0 :
-      theta.locally_owned_elements().nth_index_in_set(0);
-  for (std::size_t i = 0; i < model.control_positions.size(); ++i)
-    theta(first_control + i) =
-      rotation(model.control_positions[i], model.control_components[i]);
-  theta.compress(VectorOperation::insert);
+  const auto theta = controls_of(solver, model, rotation);
   REQUIRE(theta.l2_norm() > 0);
   REQUIRE(model.n_controls() > 0);
 
@@ -252,27 +275,12 @@ TEST_CASE("a particle model's CG takes the same iterations whatever the "
   // tolerance relative to |b| (the controls) a stiffer material in other
   // units took more iterations; relative to the free block's right-hand
   // side the solve is the same, and its state too.
-  Geometry<2> geometry;
-  geometry.body.upper            = Point<2>(2, 1);
-  geometry.nonlocal_region.lower = Point<2>(0.25, 0.25);
-  geometry.nonlocal_region.upper = Point<2>(1.25, 0.75);
-  geometry.overlap_width         = 0.125;
-  const double h                 = 1. / 32;
-  Crack<2>     crack;
-  crack.corners[0] = Point<2>(0.75 + h / 2, 0.375);
-  crack.corners[1] = Point<2>(0.75 + h / 2, 0.625);
-
+  const double                               h = 1. / 32;
   std::vector<unsigned int>                  iterations;
   std::vector<TrilinosWrappers::MPI::Vector> states;
   for (const double modulus : {1., 2e11})
     {
-      ParticleElasticity<2> particles(geometry,
-                                      Kernel("constant", 0.5, 2, 2 * h),
-                                      h,
-                                      modulus,
-                                      modulus,
-                                      std::vector<Crack<2>>{crack},
-                                      MPI_COMM_WORLD);
+      ParticleElasticity<2> particles = cracked_inner_region(h, modulus);
       particles.assemble(Functions::ZeroFunction<2>(2),
                          Functions::ZeroFunction<2>(2),
                          true);
@@ -283,19 +291,12 @@ TEST_CASE("a particle model's CG takes the same iterations whatever the "
       settings.relative_tolerance  = 1e-8;
       const ModelSolver solver(model, false, settings);
 
-      auto                          theta = solver.new_control_vector();
-      const types::global_dof_index first_control =
-        model.control_positions.empty() ?
-          0 :
-          theta.locally_owned_elements().nth_index_in_set(0);
-      for (std::size_t i = 0; i < model.control_positions.size(); ++i)
-        {
-          const auto &x = model.control_positions[i];
-          theta(first_control + i) =
-            std::sin(40 * x[0] + 7 * model.control_components[i]) *
-            std::cos(30 * x[1]);
-        }
-      theta.compress(VectorOperation::insert);
+      const auto theta =
+        controls_of(solver,
+                    model,
+                    [](const std::array<double, 3> &x, const unsigned int c) {
+                      return std::sin(40 * x[0] + 7 * c) * std::cos(30 * x[1]);
+                    });
       states.push_back(solver.forward(theta, false));
       iterations.push_back(solver.statistics().iterations);
     }
