@@ -97,7 +97,7 @@ namespace ltn
                         "1e-13",
                         Patterns::Double(0),
                         "Residual reduction, relative to the right-hand "
-                        "side (CG: the free block's), at which a model's "
+                        "side of its free block, at which a model's "
                         "GMRES or CG stops. Inside "
                         "the reduced-space CG this is the tolerance of its "
                         "first iteration, relaxed as the CG's residual falls "

@@ -117,25 +117,13 @@ namespace ltn
         if (last_norm > 0)
           x.add((b * last->rhs) / (last_norm * last_norm), last->solution);
       }
-    const SchurComplement &system =
-      transpose ? *adjoint_system : *forward_system;
-    // The tolerance is on the true residual, which is that of the Schur
-    // complement's system (GMRES: with right preconditioning); CG sets it
-    // relative to the free block's right-hand side.
+    // The tolerance is on the true residual (GMRES: with right
+    // preconditioning), relative to the free block's right-hand side (set
+    // there).
     SolverControl control(settings.max_iterations, tolerance * b_norm);
     try
       {
-        if (use_cg)
-          solve_free_block(transpose, x, b, control);
-        else
-          {
-            SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
-              control,
-              SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(50,
-                                                                         true));
-            gmres.solve(system, x, system.reduce(b), *preconditioner);
-            system.recover(x, b);
-          }
+        solve_free_block(transpose, x, b, control);
       }
     catch (const SolverControl::NoConvergence &)
       {
@@ -163,15 +151,16 @@ namespace ltn
                                 SolverControl &control) const
   {
     // With O the kept degrees of freedom outside the free block (controls
-    // and fixed data, identity rows), S = [[S_FF, S_FO], [0, I]] and S_FF is
-    // symmetric, so
+    // and fixed data, identity rows), S = [[S_FF, S_FO], [0, I]], so
     //   S u = g:    u_O = g_O,  S_FF u_F = Z (g - S u_O),
-    //   S^T y = g:  S_FF y_F = Z g,  y_O = g_O - (S^T y_F)_O:
+    //   S^T y = g:  S_FF^T y_F = Z g,  y_O = g_O - (S^T y_F)_O:
     // the adjoint applies S^T around the iteration (here, in reduce() and in
     // recover()), not in it.
     const SchurComplement &system =
       transpose ? *adjoint_system : *forward_system;
-    const SchurComplement        &block = *forward_system;
+    // CG iterates with S_FF for the adjoint too (S_FF^T = S_FF, and the
+    // forward product is the cheaper one); GMRES with S_FF^T.
+    const SchurComplement        &block = use_cg ? *forward_system : system;
     TrilinosWrappers::MPI::Vector g     = system.reduce(b);
     TrilinosWrappers::MPI::Vector rhs   = g;
     block.restrict_to_free_block(rhs);
@@ -193,13 +182,23 @@ namespace ltn
     // by 2e11 times more in pascals (doc/discretization.md, section 16).
     const double rhs_norm = rhs.l2_norm();
     control.set_tolerance(tolerance * rhs_norm);
-    if (rhs_norm > 0)
+    if (rhs_norm > 0 && use_cg)
       {
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
         cg.solve(FreeBlock{block},
                  x,
                  rhs,
                  FreeBlockPreconditioner{*preconditioner, block});
+      }
+    else if (rhs_norm > 0)
+      {
+        SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
+          control,
+          SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(50, true));
+        gmres.solve(FreeBlock{block},
+                    x,
+                    rhs,
+                    FreeBlockPreconditioner{*preconditioner, block});
       }
     else
       x = 0.; // S_FF is nonsingular

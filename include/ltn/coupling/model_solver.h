@@ -33,8 +33,8 @@ namespace ltn
      */
     bool conjugate_gradients = false;
     /**
-     * The residual reduction relative to the right-hand side (CG: to the
-     * free block's, doc/discretization.md, section 16).
+     * The residual reduction relative to the right-hand side of the free
+     * block (doc/discretization.md, section 16).
      */
     double       relative_tolerance = 1e-12;
     unsigned int max_iterations     = 1000;
@@ -164,8 +164,9 @@ namespace ltn
           WarmStart                           *last) const;
 
     /**
-     * The iterative solve of `M x = b` (@p transpose: `M^T x = b`) by CG on
-     * the free block (doc/discretization.md, section 16), from the initial
+     * The iterative solve of `M x = b` (@p transpose: `M^T x = b`) by CG
+     * or GMRES on the free block (doc/discretization.md, section 16), from the
+     * initial
      * guess @p x, to the current tolerance relative to the free block's
      * right-hand side (set in @p control).
      */
