@@ -118,9 +118,9 @@ namespace ltn
           x.add((b * last->rhs) / (last_norm * last_norm), last->solution);
       }
     // The tolerance is on the true residual (GMRES: with right
-    // preconditioning), relative to the free block's right-hand side (set
-    // there).
-    SolverControl control(settings.max_iterations, tolerance * b_norm);
+    // preconditioning), relative to the free block's right-hand side:
+    // solve_free_block sets it.
+    SolverControl control(settings.max_iterations, 0.);
     try
       {
         solve_free_block(transpose, x, b, control);

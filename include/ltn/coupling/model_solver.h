@@ -165,10 +165,9 @@ namespace ltn
 
     /**
      * The iterative solve of `M x = b` (@p transpose: `M^T x = b`) by CG
-     * or GMRES on the free block (doc/discretization.md, section 16), from the
-     * initial
-     * guess @p x, to the current tolerance relative to the free block's
-     * right-hand side (set in @p control).
+     * or GMRES on the free block (doc/discretization.md, section 16), from
+     * the initial guess @p x, to the current tolerance relative to the free
+     * block's right-hand side (which sets that of @p control).
      */
     void
     solve_free_block(const bool                           transpose,

@@ -27,10 +27,9 @@ namespace ltn
    * @p owned_dofs; rows over @p owned_dofs, the other rows empty, or with
    * @p only_stored_rows over the rows the matrix stores, so that a product
    * touches no other row and gives a vector of those rows only). Each
-   * particle's rows are
-   * built twice whatever the number of groups: once for the patterns, once
-   * for the values. @p relevant becomes @p owned_dofs and the columns the
-   * rows read.
+   * particle's rows are built twice whatever the number of groups: once for
+   * the patterns, once for the values. @p relevant becomes @p owned_dofs
+   * and the columns the rows read.
    */
   void
   assemble_rows(
