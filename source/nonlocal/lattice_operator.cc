@@ -4,10 +4,24 @@
 
 #include <algorithm>
 #include <bitset>
+#include <cstring>
 #include <map>
+#include <numeric>
 
 namespace ltn
 {
+  namespace
+  {
+    /**
+     * The doubles of the vectors the forward stencil product works on: one
+     * AVX2 register (two SSE2 ones), and the number of particles it takes at
+     * a time.
+     */
+    constexpr unsigned int lanes = 4;
+  } // namespace
+
+
+
   template <int dim>
   LatticeOperator<dim>::LatticeOperator(
     const ParticleLattice<dim>      &lattice,
@@ -118,6 +132,16 @@ namespace ltn
             }
         }
       }
+
+    // Each row of each block tiled over the values of a group of particles
+    // (apply_stencil()): entry m of row a of block k is (B_k)_{a, m mod n_c},
+    // up to lcm(n_c, lanes), after which the pattern repeats.
+    const unsigned int period = std::lcm(n_components, lanes);
+    tiled_blocks.resize((offsets.size() + 1) * n_components * period);
+    for (unsigned int row = 0; row < (offsets.size() + 1) * n_components; ++row)
+      for (unsigned int m = 0; m < period; ++m)
+        tiled_blocks[row * period + m] =
+          blocks[row * n_components + m % n_components];
 
     const std::size_t         n_offsets = offsets.size();
     std::vector<std::int64_t> origin(n_offsets);
@@ -278,24 +302,32 @@ namespace ltn
       };
     // Forward, several consecutive particles of a line with the same shared
     // rows at once: their bonds use the same blocks, and their partners are
-    // consecutive too. One running sum per particle and entry gives the FMA
-    // units independent chains; one particle at a time, the product waits
-    // on the latency of each bond's additions.
-    constexpr unsigned int                                      group = 4;
-    std::array<std::array<std::array<double, n_c>, n_c>, group> group_sum;
-    const auto add_group = [&group_sum](const double      *block,
-                                        const double      *xj,
-                                        const unsigned int used) {
-      for (int a = r0; a < r1; ++a)
+    // consecutive too, so a group's values at the partners along one offset
+    // are `group n_c` contiguous numbers, `width` vectors of `lanes`. Row a
+    // of the group's product is their lane-wise product with row a of the
+    // block tiled over the group (`tiled_blocks`), summed: one vector
+    // multiply-add per row and vector, whatever n_c, and `width` independent
+    // chains per row. The sums over each particle's components follow after
+    // the last bond.
+    using Lanes = double __attribute__((vector_size(lanes * sizeof(double))));
+    constexpr unsigned int group  = lanes;
+    constexpr int          width  = group * n_c / lanes;
+    constexpr int          period = std::lcm(n_c, int(lanes)) / int(lanes);
+    constexpr int          n_rows = a1 - a0;
+    const auto             load   = [](const double *values) {
+      Lanes v;
+      std::memcpy(&v, values, sizeof(v));
+      return v;
+    };
+    std::array<std::array<Lanes, width>, n_rows> group_sum;
+    const auto add_group = [&](const unsigned int k, const double *xj) {
+      const double *row = &tiled_blocks[(k * n_c + a0) * period * lanes];
+      for (int w = 0; w < width; ++w)
         {
-          if (used != full && !((used >> a) & 1u))
-            continue;
-          for (int b = 0; b < n_c; ++b)
-            {
-              const double entry = block[a * n_c + b];
-              for (unsigned int g = 0; g < group; ++g)
-                group_sum[g][a][b] += entry * xj[g * n_c + b];
-            }
+          const Lanes xw = load(xj + w * lanes);
+          for (int r = 0; r < n_rows; ++r)
+            group_sum[r][w] +=
+              load(row + (r * period + w % period) * lanes) * xw;
         }
     };
     for (std::size_t s = 0; s + 1 < segment_start.size(); ++s)
@@ -315,22 +347,24 @@ namespace ltn
                               return m == rows;
                             }))
               {
-                for (auto &particle : group_sum)
-                  for (auto &row : particle)
-                    row.fill(0.);
-                add_group(&blocks[n_offsets * n_c * n_c], xi, rows);
+                for (auto &row : group_sum)
+                  row.fill(Lanes{});
+                add_group(n_offsets, xi);
                 for (unsigned int k = 0; k < n_offsets; ++k)
-                  add_group(&blocks[k * n_c * n_c],
-                            x + (origin[k] + i - base) * n_c,
-                            rows);
+                  add_group(k, x + (origin[k] + i - base) * n_c);
                 double *yi = y + (i - static_cast<std::int64_t>(first)) * n_c;
                 for (unsigned int g = 0; g < group; ++g)
-                  for (int a = a0; a < a1; ++a)
+                  for (int r = 0; r < n_rows; ++r)
                     {
                       double total = 0;
                       for (int b = 0; b < n_c; ++b)
-                        total += group_sum[g][a][b];
-                      yi[g * n_c + a] = total;
+                        {
+                          const int m = g * n_c + b;
+                          total += group_sum[r][m / lanes][m % lanes];
+                        }
+                      // A row that is not shared is the stored rows' alone.
+                      yi[g * n_c + a0 + r] =
+                        (rows >> (a0 + r)) & 1u ? total : 0.;
                     }
                 p += group - 1;
                 continue;
@@ -507,7 +541,8 @@ namespace ltn
   LatticeOperator<dim>::memory_consumption() const
   {
     return shared.size() + interior.size() / 8 +
-           blocks.size() * sizeof(double) + own_rows[0].memory_consumption() +
+           (blocks.size() + tiled_blocks.size()) * sizeof(double) +
+           own_rows[0].memory_consumption() +
            (bond_origin.size() + bond_lo.size() + bond_hi.size()) *
              sizeof(std::int64_t) +
            own_rows[1].memory_consumption() + ghosted.memory_consumption() +

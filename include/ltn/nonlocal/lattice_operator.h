@@ -144,6 +144,12 @@ namespace ltn
     /** `B_k` for every offset, then `C`: row-major blocks. */
     std::vector<double> blocks;
     /**
+     * The rows of `blocks`, each repeated over the values of a group of
+     * particles the forward product takes at once, up to the least common
+     * multiple of `n_components` and the vector lanes.
+     */
+    std::vector<double> tiled_blocks;
+    /**
      * Per owned particle: are its rows and those of all its bond partners
      * the shared ones (so that the transposed product needs no tests)?
      */
