@@ -136,11 +136,11 @@ namespace ltn
     // Each row of each block tiled over the values of a group of particles
     // (apply_stencil()): entry m of row a of block k is (B_k)_{a, m mod n_c},
     // up to lcm(n_c, lanes), after which the pattern repeats.
-    const unsigned int period = std::lcm(n_components, lanes);
-    tiled_blocks.resize((offsets.size() + 1) * n_components * period);
+    const unsigned int tiled_length = std::lcm(n_components, lanes);
+    tiled_blocks.resize((offsets.size() + 1) * n_components * tiled_length);
     for (unsigned int row = 0; row < (offsets.size() + 1) * n_components; ++row)
-      for (unsigned int m = 0; m < period; ++m)
-        tiled_blocks[row * period + m] =
+      for (unsigned int m = 0; m < tiled_length; ++m)
+        tiled_blocks[row * tiled_length + m] =
           blocks[row * n_components + m % n_components];
 
     const std::size_t         n_offsets = offsets.size();
@@ -310,11 +310,12 @@ namespace ltn
     // chains per row. The sums over each particle's components follow after
     // the last bond.
     using Lanes = double __attribute__((vector_size(lanes * sizeof(double))));
-    constexpr unsigned int group  = lanes;
-    constexpr int          width  = group * n_c / lanes;
-    constexpr int          period = std::lcm(n_c, int(lanes)) / int(lanes);
-    constexpr int          n_rows = a1 - a0;
-    const auto             load   = [](const double *values) {
+    constexpr unsigned int group = lanes;
+    constexpr int          width = group * n_c / lanes;
+    // The vectors of a tiled row; beyond them it repeats.
+    constexpr int period = std::lcm(n_c, int(lanes)) / int(lanes);
+    constexpr int n_rows = a1 - a0;
+    const auto    load   = [](const double *values) {
       Lanes v;
       std::memcpy(&v, values, sizeof(v));
       return v;
