@@ -13,8 +13,8 @@ jobs=$(nproc 2>/dev/null || echo 2)
 # Debian 12 packages LtN builds and tests with. libopenblas0-pthread takes
 # over the BLAS that deal.II's sparse direct solvers (MUMPS, UMFPACK) call:
 # 4x faster factorizations in 3D than the reference BLAS.
-packages=(cmake make g++ git libdeal.ii-dev catch2 libeigen3-dev numdiff
-          clang-format-16 python3 libopenblas0-pthread)
+packages=(cmake make g++ git libdeal.ii-dev libmumps-dev catch2 libeigen3-dev
+          numdiff clang-format-16 python3 libopenblas0-pthread)
 
 install_missing() {
   local missing=()

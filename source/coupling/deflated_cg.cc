@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <deal.II/lac/lapack_templates.h>
 
 #include <ltn/coupling/deflated_cg.h>
@@ -85,31 +87,56 @@ namespace ltn
     for (const unsigned int k : {0u, 1u})
       {
         states[k].local_size = equations.new_state(k).locally_owned_size();
-        states[k].panel_width =
-          std::max<std::size_t>(1,
-                                block_bytes / sizeof(double) /
-                                  std::max<std::size_t>(1,
-                                                        states[k].local_size));
+        // The same on every rank: a panel's states may be one collective
+        // solve (NormalEquations::forward_columns).
+        const std::size_t largest =
+          Utilities::MPI::max(states[k].local_size, communicator);
+        states[k].panel_width = std::max<std::size_t>(
+          1, block_bytes / sizeof(double) / std::max<std::size_t>(1, largest));
       }
     for (unsigned int j = 0; j < Z.size(); ++j)
       states[Z[j].model].columns.push_back(j);
-    for (auto &model : states)
-      for (std::size_t a = 0; a < model.columns.size(); ++a)
-        {
-          Column          &z = Z[model.columns[a]];
-          const VectorType state =
-            equations.forward(z.model,
-                              z.controls,
-                              z.state_guess.size() ? &z.state_guess : nullptr);
-          z.state_guess.clear(); // the state itself is kept
-          if (a % model.panel_width == 0)
-            model.panels.emplace_back().reserve(
-              model.local_size * std::min(std::size_t(model.panel_width),
-                                          model.columns.size() - a));
-          model.panels.back().insert(model.panels.back().end(),
-                                     state.begin(),
-                                     state.end());
-        }
+    for (unsigned int k : {0u, 1u})
+      {
+        ModelStates &model = states[k];
+        for (std::size_t first = 0; first < model.columns.size();
+             first += model.panel_width)
+          {
+            const std::size_t end =
+              std::min(first + model.panel_width, model.columns.size());
+            // A panel's columns solved at once where the model can and no
+            // column has a guess, else one by one from their guesses.
+            const bool guessed =
+              std::any_of(model.columns.begin() + first,
+                          model.columns.begin() + end,
+                          [this](const unsigned int j) {
+                            return Z[j].state_guess.size() > 0;
+                          });
+            std::vector<VectorType> panel_states;
+            if (equations.forward_columns && !guessed)
+              {
+                std::vector<VectorType> controls;
+                for (std::size_t a = first; a < end; ++a)
+                  controls.push_back(Z[model.columns[a]].controls);
+                panel_states = equations.forward_columns(k, controls);
+              }
+            else
+              for (std::size_t a = first; a < end; ++a)
+                {
+                  Column &z = Z[model.columns[a]];
+                  panel_states.push_back(
+                    equations.forward(k,
+                                      z.controls,
+                                      z.state_guess.size() ? &z.state_guess :
+                                                             nullptr));
+                  z.state_guess.clear(); // the state itself is kept
+                }
+            std::vector<double> &panel = model.panels.emplace_back();
+            panel.reserve(model.local_size * (end - first));
+            for (const VectorType &state : panel_states)
+              panel.insert(panel.end(), state.begin(), state.end());
+          }
+      }
     form_coarse_matrix();
   }
 

@@ -167,8 +167,7 @@ namespace ltn
         std::unique_ptr<const DirectSolver> factored;
         try
           {
-            factored =
-              std::make_unique<const DirectSolver>(K, false, pivot_threshold);
+            factored = std::make_unique<const DirectSolver>(K, pivot_threshold);
           }
         catch (const SingularFactorization &)
           {

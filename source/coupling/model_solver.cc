@@ -75,7 +75,7 @@ namespace ltn
       {
         AssertThrow(!model.matrix_free,
                     ExcMessage("a direct solver needs the assembled matrix"));
-        direct = std::make_unique<DirectSolver>(model.matrix, with_adjoint);
+        direct = std::make_unique<DirectSolver>(model.matrix);
       }
   }
 
@@ -238,6 +238,27 @@ namespace ltn
     TrilinosWrappers::MPI::Vector field = model.new_vector();
     solve(false, field, rhs, with_data ? nullptr : &last_forward);
     return field;
+  }
+
+
+
+  std::vector<TrilinosWrappers::MPI::Vector>
+  ModelSolver::forward(
+    const std::vector<TrilinosWrappers::MPI::Vector> &thetas) const
+  {
+    std::vector<TrilinosWrappers::MPI::Vector> fields;
+    if (!direct)
+      {
+        for (const auto &theta : thetas)
+          fields.push_back(forward(theta, false));
+        return fields;
+      }
+    std::vector<TrilinosWrappers::MPI::Vector> rhs;
+    for (const auto &theta : thetas)
+      rhs.push_back(extend_controls(theta));
+    counts.solves += thetas.size();
+    direct->solve(fields, rhs, false);
+    return fields;
   }
 
 

@@ -100,7 +100,10 @@ namespace ltn
             return g;
           },
           [&](const unsigned int k) { return system.models[k]->new_vector(); },
-          system.alpha};
+          system.alpha,
+          [&](const unsigned int k, const std::vector<VectorType> &controls) {
+            return hessian.solvers[k]->forward(controls);
+          }};
         try
           {
             Timer                                             setup_timer;

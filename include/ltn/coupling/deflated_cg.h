@@ -45,6 +45,14 @@ namespace ltn
     /** A zero state of model k. */
     std::function<VectorType(unsigned int k)> new_state;
     double                                    alpha;
+    /**
+     * Optional: the states of several controls of model k at once, as
+     * forward() without a guess gives them one by one (a factorized model
+     * solves for all of them reading its factors once).
+     */
+    std::function<std::vector<VectorType>(unsigned int k,
+                                          const std::vector<VectorType> &)>
+      forward_columns = {};
 
     /** `F x`: the forward solves of both models, observed. */
     Observation

@@ -5,13 +5,7 @@
 
 #include <memory>
 #include <stdexcept>
-
-class Amesos_BaseSolver;
-class Epetra_LinearProblem;
-namespace EpetraExt
-{
-  class RowMatrix_Transpose;
-}
+#include <vector>
 
 namespace ltn
 {
@@ -28,24 +22,31 @@ namespace ltn
   };
 
   /**
-   * A sparse direct solver for a distributed Trilinos matrix, through Amesos:
-   * MUMPS (parallel multifrontal, with a fill-reducing ordering) where
-   * Trilinos has it, KLU otherwise. deal.II's TrilinosWrappers::SolverDirect
-   * has no transposed solve, which the adjoint of the reduced-space method
-   * needs; here the transpose is formed once (EpetraExt) and factorized too.
+   * A sparse direct solver for a distributed Trilinos matrix: MUMPS
+   * (parallel multifrontal, with a fill-reducing ordering), called directly
+   * rather than through Trilinos Amesos, for two things Amesos does not
+   * offer (doc/discretization.md, sections 10 and 16):
+   *
+   * - the transposed solve `A^T x = b` from the same factors (MUMPS's
+   *   ICNTL(9)), which the adjoint of the reduced-space method needs;
+   *   deal.II's TrilinosWrappers::SolverDirect has none, and Amesos needed
+   *   the transpose formed and factorized a second time;
+   * - many right-hand sides in one solve (`NRHS`), the factors read once for
+   *   all of them; Amesos_Mumps solves a multivector one column at a time,
+   *   which on the 2D cracked plate's 352 local coarse columns cost 58 % of
+   *   the run.
    */
   class DirectSolver
   {
   public:
     /**
-     * Factorize @p matrix, and with @p with_transpose its transpose, with
-     * MUMPS's relative pivot threshold @p pivot_threshold (a pivot must be
-     * at least this fraction of the largest entry of its column). Throws
-     * SingularFactorization if MUMPS finds the matrix numerically singular.
+     * Factorize @p matrix with MUMPS's relative pivot threshold
+     * @p pivot_threshold (a pivot must be at least this fraction of the
+     * largest entry of its column). Throws SingularFactorization if MUMPS
+     * finds the matrix numerically singular.
      */
-    DirectSolver(const TrilinosWrappers::SparseMatrix &matrix,
-                 const bool                            with_transpose,
-                 const double                          pivot_threshold = 0.5);
+    explicit DirectSolver(const TrilinosWrappers::SparseMatrix &matrix,
+                          const double pivot_threshold = 0.5);
 
     ~DirectSolver();
 
@@ -54,20 +55,22 @@ namespace ltn
     solve(TrilinosWrappers::MPI::Vector       &x,
           const TrilinosWrappers::MPI::Vector &b) const;
 
-    /** Solve `A^T x = b` (only if constructed @p with_transpose). */
+    /** Solve `A^T x = b`. */
     void
     solve_transposed(TrilinosWrappers::MPI::Vector       &x,
                      const TrilinosWrappers::MPI::Vector &b) const;
 
-    /** The Amesos solver in use. */
-    static std::string
-    package();
+    /**
+     * Solve `A x_j = b_j` (or `A^T x_j = b_j`) for all @p b at once; @p x
+     * gets as many vectors, of the layout of @p b.
+     */
+    void
+    solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
+          const std::vector<TrilinosWrappers::MPI::Vector> &b,
+          const bool                                        transpose) const;
 
   private:
-    struct Factorization;
-
-    std::unique_ptr<EpetraExt::RowMatrix_Transpose> transposer;
-    std::unique_ptr<Factorization>                  forward;
-    std::unique_ptr<Factorization>                  adjoint;
+    struct Mumps;
+    std::unique_ptr<Mumps> mumps;
   };
 } // namespace ltn
