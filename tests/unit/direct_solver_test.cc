@@ -1,0 +1,107 @@
+// The sparse direct solver (MUMPS, doc/discretization.md, sections 10 and
+// 16) on a nonsymmetric matrix: A x = b and A^T x = b from the same
+// factors, and many right-hand sides in one solve equal to one at a time.
+
+#include <deal.II/base/index_set.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+
+#include <ltn/coupling/direct_solver.h>
+
+#include <catch2/catch.hpp>
+
+#include <random>
+
+using namespace ltn;
+
+namespace
+{
+  /**
+   * A nonsymmetric, nonsingular n x n matrix: a convection-diffusion
+   * stencil plus one far entry per row, so that A and A^T differ.
+   */
+  TrilinosWrappers::SparseMatrix
+  nonsymmetric_matrix(const IndexSet &rows)
+  {
+    const unsigned int     n = rows.size();
+    DynamicSparsityPattern pattern(n, n, rows);
+    const auto             entries = [n](const unsigned int i) {
+      return std::vector<std::pair<unsigned int, double>>{
+        {i, 4.},
+        {(i + 1) % n, -1.3},
+        {(i + n - 1) % n, -0.7},
+        {(i + 7) % n, 0.2 + 0.001 * i}};
+    };
+    for (const auto i : rows)
+      for (const auto &[j, value] : entries(i))
+        pattern.add(i, j);
+    TrilinosWrappers::SparseMatrix matrix;
+    matrix.reinit(rows, rows, pattern, MPI_COMM_WORLD);
+    for (const auto i : rows)
+      for (const auto &[j, value] : entries(i))
+        matrix.set(i, j, value);
+    matrix.compress(VectorOperation::insert);
+    return matrix;
+  }
+
+  double
+  relative_residual(const TrilinosWrappers::SparseMatrix &A,
+                    const bool                            transpose,
+                    const TrilinosWrappers::MPI::Vector  &x,
+                    const TrilinosWrappers::MPI::Vector  &b)
+  {
+    TrilinosWrappers::MPI::Vector r(b);
+    if (transpose)
+      A.Tvmult(r, x);
+    else
+      A.vmult(r, x);
+    r -= b;
+    return r.l2_norm() / b.l2_norm();
+  }
+} // namespace
+
+
+
+TEST_CASE("the direct solver solves A and A^T for one or many right-hand sides",
+          "[solvers]")
+{
+  const unsigned int n = 300;
+  IndexSet           rows(n);
+  rows.add_range(0, n);
+  const TrilinosWrappers::SparseMatrix A = nonsymmetric_matrix(rows);
+  const DirectSolver                   solver(A);
+
+  std::mt19937                               random(5);
+  std::uniform_real_distribution<double>     uniform(-1., 1.);
+  std::vector<TrilinosWrappers::MPI::Vector> b;
+  for (unsigned int j = 0; j < 4; ++j)
+    {
+      b.emplace_back(rows, MPI_COMM_WORLD);
+      for (const auto i : rows)
+        b.back()(i) = uniform(random);
+      b.back().compress(VectorOperation::insert);
+    }
+
+  for (const bool transpose : {false, true})
+    {
+      std::vector<TrilinosWrappers::MPI::Vector> many;
+      solver.solve(many, b, transpose);
+      REQUIRE(many.size() == b.size());
+      for (unsigned int j = 0; j < b.size(); ++j)
+        {
+          TrilinosWrappers::MPI::Vector one(b[j]);
+          if (transpose)
+            solver.solve_transposed(one, b[j]);
+          else
+            solver.solve(one, b[j]);
+          INFO("transpose " << transpose << ", right-hand side " << j);
+          CHECK(relative_residual(A, transpose, one, b[j]) < 1e-14);
+          CHECK(relative_residual(A, transpose, many[j], b[j]) < 1e-14);
+          // A^T x = b is another system: its solution is not A's.
+          if (transpose)
+            CHECK(relative_residual(A, false, one, b[j]) > 1e-3);
+          one -= many[j];
+          CHECK(one.linfty_norm() < 1e-14 * many[j].linfty_norm());
+        }
+    }
+}
