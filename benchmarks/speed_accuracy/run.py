@@ -72,7 +72,7 @@ scenes = {
             "coupled, reduced space cg, gmres matrix-free":
                 (["Coupling/Method=reduced space cg"] + scalable, [0, 1]),
             "coupled, reduced space cg, cg matrix-free":
-                (["Coupling/Method=reduced space cg"] + scalable_cg, [0, 1]),
+                (["Coupling/Method=reduced space cg"] + scalable_cg, [0, 1, 2]),
             # Level 1 failed (exit status 1 after 7 minutes, 2026-11-22).
             "coupled, full space gmres, matrix-free":
                 (full_space_gmres, [0]),
