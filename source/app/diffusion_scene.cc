@@ -114,6 +114,7 @@ namespace ltn
     // The largest horizon of the study is on the coarsest level.
     const double eps0 = nonlocal_parameters.horizon(h0);
     geometry.validate(h0, eps0, eps0);
+    local_parameters.validate(geometry);
 
     if constexpr (dim > 1)
       if (geometry.has_nonlocal_model())

@@ -173,6 +173,7 @@ namespace ltn
     geometry.validate(h0,
                       std::max(2 * eps0, (2 * radius - 0.5) * spacing0),
                       eps0);
+    local_parameters.validate(geometry);
     if (geometry.has_nonlocal_model())
       nonlocal_parameters.validate_particles(geometry,
                                              local_parameters.degree,

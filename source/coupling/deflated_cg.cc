@@ -136,6 +136,7 @@ namespace ltn
             for (const VectorType &state : panel_states)
               panel.insert(panel.end(), state.begin(), state.end());
           }
+        model.gradient_row.assign(model.local_size, false);
       }
     form_coarse_matrix();
   }
@@ -234,15 +235,57 @@ namespace ltn
                                      std::vector<double> &y) const
   {
     const ModelStates &model = states[k];
-    for (unsigned int p = 0; p < model.panels.size(); ++p)
-      add_transposed_product(model.local_size,
-                             model.panels[p].size() /
-                               std::max<std::size_t>(1, model.local_size),
+    const std::size_t  size  = model.local_size;
+    // The rows where a column of g is nonzero, and whether the packed panels
+    // hold them all.
+    bool covered = true;
+    for (std::size_t i = 0; i < size; ++i)
+      if (!model.gradient_row[i])
+        for (unsigned int c = 0; c < n_columns; ++c)
+          if (g[c * size + i] != 0.)
+            {
+              model.gradient_row[i] = true;
+              covered               = false;
+              break;
+            }
+    if (!covered)
+      model.pack_gradient_rows();
+
+    const std::vector<std::size_t> &rows = model.gradient_rows;
+    std::vector<double>             packed_g(rows.size() * n_columns);
+    for (unsigned int c = 0; c < n_columns; ++c)
+      for (std::size_t r = 0; r < rows.size(); ++r)
+        packed_g[c * rows.size() + r] = g[c * size + rows[r]];
+    for (unsigned int p = 0; p < model.packed_panels.size(); ++p)
+      add_transposed_product(rows.size(),
+                             model.packed_panels[p].size() /
+                               std::max<std::size_t>(1, rows.size()),
                              n_columns,
-                             model.panels[p].data(),
-                             g,
+                             model.packed_panels[p].data(),
+                             packed_g.data(),
                              y.data() + p * model.panel_width,
                              model.columns.size());
+  }
+
+
+
+  void
+  DeflationSpace::ModelStates::pack_gradient_rows() const
+  {
+    gradient_rows.clear();
+    for (std::size_t i = 0; i < local_size; ++i)
+      if (gradient_row[i])
+        gradient_rows.push_back(i);
+    packed_panels.resize(panels.size());
+    for (unsigned int p = 0; p < panels.size(); ++p)
+      {
+        const std::size_t width = panels[p].size() / local_size;
+        packed_panels[p].resize(gradient_rows.size() * width);
+        for (std::size_t c = 0; c < width; ++c)
+          for (std::size_t r = 0; r < gradient_rows.size(); ++r)
+            packed_panels[p][c * gradient_rows.size() + r] =
+              panels[p][c * local_size + gradient_rows[r]];
+      }
   }
 
 

@@ -126,6 +126,7 @@ namespace ltn
       }
     model.matrix.compress(VectorOperation::insert);
     model.rhs.compress(VectorOperation::insert);
+    model.constrained = hanging;
   }
 
 

@@ -63,7 +63,7 @@ namespace ltn
     , mu_value(mu)
     , tolerance(geometry.tolerance())
     , communicator(communicator)
-    , mesh(geometry, h, communicator)
+    , mesh(geometry, h, parameters.graded_mesh_layers, communicator)
     , fe(FE_Q<dim>(parameters.degree), dim)
     , dof_handler(mesh.get_triangulation())
   {

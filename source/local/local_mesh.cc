@@ -66,6 +66,25 @@ namespace ltn
         }
       return steps;
     }
+
+    /** The distance from @p cell to the box @p region (0 if they meet). */
+    template <int dim>
+    double
+    distance_to(const typename Triangulation<dim>::cell_iterator &cell,
+                const Box<dim>                                   &region)
+    {
+      const BoundingBox<dim> cell_box = cell->bounding_box();
+      double                 square   = 0;
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          const double gap = std::max(
+            {0.,
+             region.lower[d] - cell_box.get_boundary_points().second[d],
+             cell_box.get_boundary_points().first[d] - region.upper[d]});
+          square += gap * gap;
+        }
+      return std::sqrt(square);
+    }
   } // namespace
 
 
@@ -73,9 +92,13 @@ namespace ltn
   template <int dim>
   LocalMesh<dim>::LocalMesh(const Geometry<dim> &geometry,
                             const double         h,
+                            const unsigned int   graded_layers,
                             const MPI_Comm       communicator)
     : triangulation(make_triangulation<dim>(communicator))
   {
+    // LocalParameters::validate() tells the user.
+    AssertThrow(graded_layers == 0 || geometry.has_nonlocal_model(),
+                ExcMessage("a mesh is graded towards the nonlocal region"));
     // A coarse mesh of the body minus the cells of the shrunk nonlocal
     // region (the geometry is aligned with h, see Geometry::validate()),
     // then refined to h.
@@ -117,7 +140,22 @@ namespace ltn
               }
             cell->face(f)->set_boundary_id(id);
           }
-    triangulation->refine_global(steps);
+    if (graded_layers == 0)
+      triangulation->refine_global(steps);
+    else
+      for (unsigned int step = 0; step < steps; ++step)
+        {
+          // A cell is split when its children would lie within
+          // graded_layers of their own sizes of Omega_n; the cells just at
+          // that distance are not (with a tolerance: round-off decided them
+          // one by one).
+          for (const auto &cell : triangulation->active_cell_iterators())
+            if (cell->is_locally_owned() &&
+                distance_to<dim>(cell, geometry.nonlocal_region) <
+                  graded_layers * 0.5 * cell->extent_in_direction(0) - tol)
+              cell->set_refine_flag();
+          triangulation->execute_coarsening_and_refinement();
+        }
   }
 
 

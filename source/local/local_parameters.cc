@@ -40,6 +40,16 @@ namespace ltn
                         "only these displacement components (x, y, z) are "
                         "fixed, the traction acts on the others; Dirichlet "
                         "boundaries not listed fix all components.");
+      prm.declare_entry("Graded mesh layers",
+                        "0",
+                        Patterns::Integer(0, 1000),
+                        "0: the local mesh has cells of `Discretization/Mesh "
+                        "size` h everywhere. n > 0: only within n h of the "
+                        "nonlocal region; a cell of size 2^k h lies within "
+                        "2^k n h of it, up to the coarsest cells the body and "
+                        "the nonlocal region's corners allow. Far from the "
+                        "nonlocal region the field is smooth and coarse cells "
+                        "resolve it. Coupled scenes only.");
       prm.declare_entry("Adaptive refinement cycles",
                         "0",
                         Patterns::Integer(0, 20),
@@ -176,10 +186,24 @@ namespace ltn
       dirichlet_components =
         parse_dirichlet_components<dim>(dirichlet_components_text,
                                         dirichlet_faces);
+      graded_mesh_layers  = prm.get_integer("Graded mesh layers");
       adaptive_cycles     = prm.get_integer("Adaptive refinement cycles");
       refinement_fraction = prm.get_double("Refinement fraction");
     }
     prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  LocalParameters<dim>::validate(const Geometry<dim> &geometry) const
+  {
+    check_input(graded_mesh_layers == 0 || geometry.has_nonlocal_model(),
+                "Local model/Graded mesh layers",
+                std::to_string(graded_mesh_layers),
+                "0 in a scene without a nonlocal model (the mesh is graded "
+                "towards the nonlocal region)");
   }
 
 

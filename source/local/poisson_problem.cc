@@ -18,7 +18,7 @@ namespace ltn
                                       const MPI_Comm              communicator)
     : parameters(parameters)
     , communicator(communicator)
-    , mesh(geometry, h, communicator)
+    , mesh(geometry, h, parameters.graded_mesh_layers, communicator)
     , fe(parameters.degree)
     , dof_handler(mesh.get_triangulation())
   {

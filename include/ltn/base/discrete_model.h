@@ -98,6 +98,12 @@ namespace ltn
     IndexSet controls;
     IndexSet fixed;
     /**
+     * The owned free degrees of freedom whose rows are constraints, not
+     * equations: `x_i - sum_k c_ik x_k = 0` for a hanging node of a local
+     * mesh. Algebraic multigrid sees them as identity rows.
+     */
+    IndexSet constrained;
+    /**
      * Per owned control, in the order of `controls`: where it sits (unused
      * coordinates 0) and which component of the field it holds. The coarse
      * space of the reduced Hessian's preconditioner evaluates smooth fields

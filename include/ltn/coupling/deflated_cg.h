@@ -142,6 +142,24 @@ namespace ltn
       /** The entries of the state in the @p a-th column of the model. */
       const double *
       state(const unsigned int a) const;
+
+      /**
+       * A gradient `B^T W d` is nonzero only at the unknowns of the
+       * overlap's points (of their cells, for the FEM model), a tenth of
+       * the FEM model's unknowns on the cracked plate: the products with
+       * the states are taken over these rows alone, from copies of the
+       * panels restricted to them. The rows are those where a gradient has
+       * been nonzero so far (`gradient_row`), grown, and the copies made
+       * again, when one is nonzero elsewhere, so the products are exact
+       * for any gradient.
+       */
+      mutable std::vector<bool>                gradient_row;
+      mutable std::vector<std::size_t>         gradient_rows;
+      mutable std::vector<std::vector<double>> packed_panels;
+
+      /** Set `gradient_rows` from `gradient_row` and pack the panels. */
+      void
+      pack_gradient_rows() const;
     };
 
     /** Form `E` and factor it. */

@@ -38,7 +38,12 @@ namespace ltn
     const unsigned int node_dofs;
     const unsigned int surrogate_components;
     /** DiscreteModel::surrogate_nodes. */
-    const std::vector<unsigned int>   nodes;
+    const std::vector<unsigned int> nodes;
+    /**
+     * The model's matrix with identity rows at its constrained degrees of
+     * freedom, which `amg` is built on when there are any; else empty.
+     */
+    TrilinosWrappers::SparseMatrix    amg_matrix;
     TrilinosWrappers::PreconditionAMG amg;
     /** One component of a vector, over the surrogate's nodes. */
     mutable TrilinosWrappers::MPI::Vector node_src, node_dst;

@@ -20,7 +20,8 @@ namespace ltn
 
   /**
    * The mesh of the local region `Omega_l`, shared by the local models: a
-   * uniform mesh of size `h` of the body minus the cells outside `Omega_l`,
+   * mesh of size `h` (uniform, or graded away from `Omega_n`) of the body
+   * minus the cells outside `Omega_l`,
    * built from a coarse mesh as coarse as the layout allows (so that
    * p4est's replicated coarse forest stays small). Boundary faces on the
    * body keep deal.II's colorized ids `0 .. 2dim-1` (`x-`, `x+`, ...); all
@@ -37,9 +38,14 @@ namespace ltn
     /** The boundary id of `Gamma_c`. */
     static constexpr types::boundary_id control_boundary_id = 2 * dim;
 
-    /** Mesh `Omega_l` of @p geometry with cells of size @p h. */
+    /**
+     * Mesh `Omega_l` of @p geometry with cells of size @p h: everywhere if
+     * @p graded_layers is 0, else within @p graded_layers h of `Omega_n`,
+     * cells of size 2^k h within 2^k @p graded_layers h of it.
+     */
     LocalMesh(const Geometry<dim> &geometry,
               const double         h,
+              const unsigned int   graded_layers,
               const MPI_Comm       communicator);
 
     LocalMesh(const LocalMesh &) = delete;

@@ -4,6 +4,8 @@
 
 #include <deal.II/fe/component_mask.h>
 
+#include <ltn/scene/geometry.h>
+
 #include <map>
 #include <set>
 #include <string>
@@ -35,6 +37,14 @@ namespace ltn
     parse_parameters(ParameterHandler &prm);
 
     /**
+     * Check the parameters against the scene's @p geometry: an InputError
+     * names `Local model/Graded mesh layers` if it grades the mesh of a scene
+     * without a nonlocal region.
+     */
+    void
+    validate(const Geometry<dim> &geometry) const;
+
+    /**
      * The components of a field with @p n_components components that the
      * Dirichlet condition on body face @p face fixes: none on a face that is
      * not in `Dirichlet boundaries`, those listed in `Dirichlet components`
@@ -53,7 +63,9 @@ namespace ltn
      */
     std::map<unsigned int, std::vector<bool>> dirichlet_components;
     /** `Dirichlet components` as written, for error messages. */
-    std::string  dirichlet_components_text;
+    std::string dirichlet_components_text;
+    /** Cells of size h within this many h of `Omega_n` (0: everywhere). */
+    unsigned int graded_mesh_layers  = 0;
     unsigned int adaptive_cycles     = 0;
     double       refinement_fraction = 0.3;
   };
