@@ -24,9 +24,10 @@ namespace ltn
         // the matrix nonsymmetric, and ML's Chebyshev smoothing of it
         // diverged: the local GMRES of the cracked plate on a graded mesh
         // stalled at a relative residual of 0.9. The hierarchy is built on
-        // the matrix with identity rows there instead; the preconditioned
-        // operator is then the identity plus a nilpotent part at those rows,
-        // which GMRES resolves in one more iteration.
+        // the matrix with identity rows there instead: were the V-cycle
+        // exact on the other rows, the preconditioned operator would be the
+        // identity plus a nilpotent part at those rows (x_i follows its
+        // masters), which GMRES resolves in one more iteration.
         if (Utilities::MPI::max(model.constrained.n_elements(),
                                 model.communicator) == 0)
           {

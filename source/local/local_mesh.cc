@@ -73,14 +73,12 @@ namespace ltn
     distance_to(const typename Triangulation<dim>::cell_iterator &cell,
                 const Box<dim>                                   &region)
     {
-      const BoundingBox<dim> cell_box = cell->bounding_box();
-      double                 square   = 0;
+      const auto [lower, upper] = cell->bounding_box().get_boundary_points();
+      double square             = 0;
       for (unsigned int d = 0; d < dim; ++d)
         {
           const double gap = std::max(
-            {0.,
-             region.lower[d] - cell_box.get_boundary_points().second[d],
-             cell_box.get_boundary_points().first[d] - region.upper[d]});
+            {0., region.lower[d] - upper[d], lower[d] - region.upper[d]});
           square += gap * gap;
         }
       return std::sqrt(square);

@@ -44,10 +44,11 @@ namespace ltn
                         "0",
                         Patterns::Integer(0, 1000),
                         "0: the local mesh has cells of `Discretization/Mesh "
-                        "size` h everywhere. n > 0: only within n h of the "
-                        "nonlocal region; a cell of size 2^k h lies within "
-                        "2^k n h of it, up to the coarsest cells the body and "
-                        "the nonlocal region's corners allow. Far from the "
+                        "size` h everywhere. n > 0: all cells within n h of "
+                        "the nonlocal region have size h; a cell of size 2^k h "
+                        "lies at least 2^(k-1) n h from it, up to the coarsest "
+                        "cells the body and the nonlocal region's corners "
+                        "allow. Far from the "
                         "nonlocal region the field is smooth and coarse cells "
                         "resolve it. Coupled scenes only.");
       prm.declare_entry("Adaptive refinement cycles",

@@ -41,7 +41,7 @@ namespace ltn
     /**
      * Mesh `Omega_l` of @p geometry with cells of size @p h: everywhere if
      * @p graded_layers is 0, else within @p graded_layers h of `Omega_n`,
-     * cells of size 2^k h within 2^k @p graded_layers h of it.
+     * and cells of size 2^k h at least 2^(k-1) @p graded_layers h from it.
      */
     LocalMesh(const Geometry<dim> &geometry,
               const double         h,
