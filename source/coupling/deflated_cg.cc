@@ -300,18 +300,6 @@ namespace ltn
 
 
   Vector<double>
-  DeflationSpace::solve(const BlockVectorType &b) const
-  {
-    Vector<double> y(Z.size());
-    for (std::size_t j = 0; j < Z.size(); ++j)
-      y(j) = dot(Z[j], b);
-    coarse_solve(y);
-    return y;
-  }
-
-
-
-  Vector<double>
   DeflationSpace::solve_product(const BlockVectorType &v,
                                 const Observation     &observed) const
   {
@@ -408,7 +396,7 @@ namespace ltn
     const std::function<void(NormalEquations::BlockVectorType &,
                              const NormalEquations::BlockVectorType &)>
                                                     &precondition,
-    const NormalEquations::BlockVectorType          &b,
+    const NormalEquations::Observation              &data,
     NormalEquations::BlockVectorType                &x,
     SolverControl                                   &control,
     const std::function<void(double residual_norm)> &before_products)
@@ -424,15 +412,21 @@ namespace ltn
     };
 
     // Start from the coarse solution x = Z E^{-1} Z^T b, so that the
-    // residual is orthogonal to Z.
-    x                 = 0.;
-    BlockVectorType r = b;
+    // residual is orthogonal to Z. With b = -F^T W d, Z^T b = -(F Z)^T W d
+    // needs no adjoint solve, and r = b - A x = -(F^T W (d + F x) + alpha x)
+    // only one: b itself is never formed.
+    x                      = 0.;
+    Observation observed_x = equations.observe(NormalEquations::States());
     if (coarse.size() > 0)
       {
-        Observation observed_x = equations.observe(NormalEquations::States());
-        coarse.add(coarse.solve(b), x, observed_x);
-        r -= product(x, observed_x);
+        Vector<double> c = coarse.solve_product(x, data);
+        c *= -1.;
+        coarse.add(c, x, observed_x);
       }
+    for (std::size_t q = 0; q < observed_x.size(); ++q)
+      observed_x[q] += data[q];
+    BlockVectorType r = product(x, observed_x);
+    r *= -1.;
     double       residual = r.l2_norm();
     unsigned int step     = 0;
     if (control.check(step, residual) == SolverControl::success)
@@ -440,7 +434,7 @@ namespace ltn
 
     // The direction p = z - Z E^{-1} Z^T A z is A-orthogonal to Z; its
     // observation F p follows from F z by the same combination.
-    BlockVectorType z                       = b;
+    BlockVectorType z                       = r;
     const auto      preconditioned_residual = [&]() {
       before_products(residual);
       precondition(z, r);

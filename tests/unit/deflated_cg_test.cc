@@ -176,6 +176,30 @@ namespace
                   alpha}
     {}
 
+    /**
+     * The observation whose right-hand side `b = -F^T W d` the deflated CG
+     * solves for: @p f at each observation.
+     */
+    static Observation
+    data(const std::function<double(unsigned int)> &f)
+    {
+      Observation d(n_observations);
+      for (unsigned int q = 0; q < n_observations; ++q)
+        d[q] = f(q);
+      return d;
+    }
+
+    /** `b = -F^T W d`, counting no adjoint solve. */
+    BlockVectorType
+    rhs(const Observation &d) const
+    {
+      BlockVectorType b = new_vector();
+      for (const unsigned int k : {0u, 1u})
+        b.block(k) = equations.observe_transpose(k, d);
+      b *= -1.;
+      return b;
+    }
+
     /** `F^T W F + alpha I`, dense. */
     FullMatrix<double>
     matrix() const
@@ -229,8 +253,9 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
           dst(i) = src(i) / A(i, i);
         dst.compress(VectorOperation::insert);
       };
-      const BlockVectorType b = from_function(
-        [](unsigned int i) { return 1 + std::sin(0.9 * i) + 0.01 * i; });
+      const Observation d = CountedEquations::data(
+        [](unsigned int q) { return 1 + std::sin(0.9 * q) + 0.01 * q; });
+      const BlockVectorType b = counted.rhs(d);
 
       // The exact solution, by LAPACK.
       LAPACKFullMatrix<double> lu(n, n);
@@ -253,7 +278,7 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
       unsigned int    callbacks = 0;
       SolverControl   control(100, 1e-12 * b.l2_norm());
       solve_deflated_cg(
-        counted.equations, coarse, jacobi, b, x, control, [&](double) {
+        counted.equations, coarse, jacobi, d, x, control, [&](double) {
           ++callbacks;
         });
       double error = 0, norm = 0;
@@ -270,8 +295,8 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
       CHECK(callbacks == iterations);
 
       // CG with the balancing preconditioner, from the same start Z E^{-1}
-      // Z^T b: A Z costs a product with F^T W per column; the iterates are
-      // the same in exact arithmetic.
+      // Z^T b (Z^T b = -(F Z)^T W d): A Z costs a product with F^T W per
+      // column; the iterates are the same in exact arithmetic.
       const ControlCoarseSpace balancing(coarse_columns(),
                                          [&](BlockVectorType       &dst,
                                              const BlockVectorType &src) {
@@ -279,7 +304,9 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
                                          });
       BlockVectorType          y = new_vector();
       Observation              observed_start(n_observations, 0.);
-      coarse.add(coarse.solve(b), y, observed_start);
+      Vector<double>           start = coarse.solve_product(y, d);
+      start *= -1.;
+      coarse.add(start, y, observed_start);
       SolverControl             balanced_control(100, 1e-12 * b.l2_norm());
       SolverCG<BlockVectorType> cg(balanced_control);
       cg.solve(DenseOperator{A}, y, b, Balanced{balancing, jacobi});
@@ -293,9 +320,9 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
         BlockVectorType x5 = new_vector(), y5 = new_vector();
         CHECK_THROWS_AS(
           solve_deflated_cg(
-            counted.equations, coarse, jacobi, b, x5, five, [](double) {}),
+            counted.equations, coarse, jacobi, d, x5, five, [](double) {}),
           SolverControl::NoConvergence);
-        coarse.add(coarse.solve(b), y5, observed_start);
+        coarse.add(start, y5, observed_start);
         SolverCG<BlockVectorType> cg5(balanced_five);
         CHECK_THROWS_AS(
           cg5.solve(DenseOperator{A}, y5, b, Balanced{balancing, jacobi}),
@@ -335,16 +362,18 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
   CountedEquations         counted(0.);
   const FullMatrix<double> A = counted.matrix();
   const DeflationSpace     none({}, counted.equations);
-  const BlockVectorType    b =
-    from_function([](unsigned int i) { return std::cos(0.4 * i * i); });
+  const Observation        d = CountedEquations::data(
+    [](unsigned int q) { return std::cos(0.4 * q * q); });
+  const BlockVectorType b = counted.rhs(d);
   const auto identity = [](BlockVectorType &dst, const BlockVectorType &src) {
     dst = src;
   };
   BlockVectorType x = new_vector();
   SolverControl   control(200, 1e-10 * b.l2_norm());
   solve_deflated_cg(
-    counted.equations, none, identity, b, x, control, [](double) {});
-  CHECK(counted.n_adjoint == control.last_step());
+    counted.equations, none, identity, d, x, control, [](double) {});
+  // The start's residual b is one product with F^T W.
+  CHECK(counted.n_adjoint == control.last_step() + 1);
 
   BlockVectorType           y = new_vector();
   SolverControl             cg_control(200, 1e-10 * b.l2_norm());
@@ -366,7 +395,7 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
       SolverControl   stop(steps, 0.);
       CHECK_THROWS_AS(
         solve_deflated_cg(
-          counted.equations, none, identity, b, early, stop, [](double) {}),
+          counted.equations, none, identity, d, early, stop, [](double) {}),
         SolverControl::NoConvergence);
       BlockVectorType           cg_early = new_vector();
       SolverControl             cg_stop(steps, 0.);
@@ -382,6 +411,6 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
   SolverControl too_few(3, 1e-10 * b.l2_norm());
   CHECK_THROWS_AS(
     solve_deflated_cg(
-      counted.equations, none, identity, b, x, too_few, [](double) {}),
+      counted.equations, none, identity, d, x, too_few, [](double) {}),
     SolverControl::NoConvergence);
 }

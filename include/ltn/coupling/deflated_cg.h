@@ -101,10 +101,6 @@ namespace ltn
     DeflationSpace &
     operator=(const DeflationSpace &) = delete;
 
-    /** `E^{-1} Z^T b`: the coefficients of the best coarse approximation. */
-    Vector<double>
-    solve(const BlockVectorType &b) const;
-
     /**
      * `E^{-1} Z^T A v` for @p v with its observation @p observed (`F v`):
      * `Z^T A v = (V Z)^T B^T W F v + alpha Z^T v` needs no adjoint solve.
@@ -206,8 +202,12 @@ namespace ltn
    * balancing preconditioner of ControlCoarseSpace started from the coarse
    * solution, which needs `A Z`: an adjoint solve per column more.
    *
-   * @p x is overwritten. The iteration stops as @p control says of the
-   * residual norm `|b - A x|` (in its recursive form); before each
+   * The right-hand side is `b = -F^T W d` for the observation @p data (the
+   * mismatch of the models' states without controls, in the reduced
+   * space): the start needs no product with `F^T W` of `b` beside that of
+   * the start's residual. @p x is overwritten. The iteration stops as
+   * @p control says of the residual norm `|b - A x|` (in its recursive
+   * form), so its tolerance is the caller's, given `|b|`; before each
    * iteration's products, @p before_products is called with that norm (an
    * outer method relaxes its inner solves with it). Throws
    * SolverControl::NoConvergence as deal.II's solvers do.
@@ -219,7 +219,7 @@ namespace ltn
     const std::function<void(NormalEquations::BlockVectorType &,
                              const NormalEquations::BlockVectorType &)>
                                                     &precondition,
-    const NormalEquations::BlockVectorType          &b,
+    const NormalEquations::Observation              &data,
     NormalEquations::BlockVectorType                &x,
     SolverControl                                   &control,
     const std::function<void(double residual_norm)> &before_products);
