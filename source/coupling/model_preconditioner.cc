@@ -1,5 +1,7 @@
 #include <ltn/coupling/model_preconditioner.h>
 
+#include <algorithm>
+
 namespace ltn
 {
   ModelPreconditioner::ModelPreconditioner(const DiscreteModel &model)
@@ -88,7 +90,10 @@ namespace ltn
     // vectors are zero there).
     // So it is at the nodes the surrogate leaves out (their rows of the
     // model are identities).
-    dst = src;
+    // A copy of the owned values: `dst = src` of two vectors made apart
+    // imports (deal.II 9.4 compares their communicators' objects).
+    AssertDimension(dst.locally_owned_size(), src.locally_owned_size());
+    std::copy(src.begin(), src.end(), dst.begin());
     for (unsigned int c = 0; c < surrogate_components; ++c)
       {
         for (std::size_t i = 0; i < nodes.size(); ++i)

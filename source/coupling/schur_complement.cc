@@ -75,16 +75,22 @@ namespace ltn
     const TrilinosWrappers::MPI::Vector &src,
     const TrilinosWrappers::MPI::Vector &mask) const
   {
-    v = src;
-    v.scale(mask);
+    // Loops over the owned values, not vector operations: `v = src` of
+    // two vectors made apart imports (deal.II 9.4 compares their
+    // communicators' objects, not the communicators), and the fused loops
+    // pass over the vectors once.
+    AssertDimension(v.locally_owned_size(), src.locally_owned_size());
+    const std::size_t n = v.locally_owned_size();
+    for (std::size_t i = 0; i < n; ++i)
+      v.begin()[i] = src.begin()[i] * mask.begin()[i];
     if (!eliminates)
       model.vmult_rows(dst, v, transpose, RowSubset::all);
     else
       {
         // The t-rows of M [u; 0]: C u; v = [u; -D^-1 C u].
         model.vmult_rows(w, v, transpose, RowSubset::eliminated);
-        w.scale(inverse_diagonal);
-        v -= w;
+        for (std::size_t i = 0; i < n; ++i)
+          v.begin()[i] -= inverse_diagonal.begin()[i] * w.begin()[i];
         // The u-rows of M v: A u - B D^-1 C u.
         model.vmult_rows(dst, v, transpose, RowSubset::kept);
       }

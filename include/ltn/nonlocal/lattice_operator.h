@@ -10,6 +10,7 @@
 #include <ltn/nonlocal/particle_lattice.h>
 
 #include <Epetra_Import.h>
+#include <Epetra_Vector.h>
 
 #include <array>
 #include <functional>
@@ -111,12 +112,15 @@ namespace ltn
 
     /**
      * The shared-stencil part of `M x` (or of `M^T x`) for this rank's
-     * particles, from the values @p x of the relevant range into the
-     * owned values @p y, at the components `[a0, a1)` of each particle only.
+     * particles into the owned values @p y, at the components `[a0, a1)` of
+     * each particle only. Segment `s` reads the values of particle `i` at
+     * `x[source][(i - x_first[source]) n_c]`, `source = segment_source[s]`.
      */
     template <int n_c, bool transpose, int a0, int a1>
     void
-    apply_stencil(const double *x, double *y) const;
+    apply_stencil(const std::array<const double *, 3> &x,
+                  const std::array<std::int64_t, 3>   &x_first,
+                  double                              *y) const;
 
     /**
      * The pieces of lattice lines this rank's particles lie on: piece `s`
@@ -128,6 +132,15 @@ namespace ltn
      */
     std::vector<types::global_dof_index> segment_start;
     std::vector<std::int64_t>            bond_origin, bond_lo, bond_hi;
+    /**
+     * Per segment, where its products read the values: 0 from the owned
+     * vector itself, when all the particles its bonds reach are this
+     * rank's; else 1 or 2, the lower or the upper of the two ranges of
+     * `edges` (read_edges()).
+     */
+    std::vector<unsigned char> segment_source;
+    /** The particle numbers `[first, end)` of the two ranges of `edges`. */
+    std::array<std::pair<std::int64_t, std::int64_t>, 2> edge_ranges;
 
     const ParticleLattice<dim>     &lattice;
     const std::vector<LatticeIndex> offsets;
@@ -165,16 +178,31 @@ namespace ltn
      */
     mutable std::array<TrilinosWrappers::MPI::Vector, 2> own_rows_values;
     std::array<std::vector<unsigned int>, 2>             own_rows_entries;
+    /**
+     * Per part: the indices into this rank's owned values of the rows
+     * that are rows of the identity, which `own_rows` leaves out.
+     */
+    std::array<std::vector<unsigned int>, 2> identity_rows;
     /** A transposed product with stored rows, over the owned values. */
     mutable TrilinosWrappers::MPI::Vector own_rows_transposed;
     /** Does any rank store a row of the kept (eliminated) components? */
-    std::array<bool, 2>                   has_own_rows = {{false, false}};
-    types::global_dof_index               n_own_rows   = 0;
-    IndexSet                              owned_dofs, relevant;
-    MPI_Comm                              communicator;
-    mutable TrilinosWrappers::MPI::Vector ghosted;
-    /** The plan that fills `ghosted` from an owned vector, built once. */
+    std::array<bool, 2>     has_own_rows = {{false, false}};
+    types::global_dof_index n_own_rows   = 0;
+    IndexSet                owned_dofs, relevant;
+    MPI_Comm                communicator;
+    /**
+     * The values near the ends of this rank's range, owned or not, that
+     * the segments with `segment_source` 1 or 2 read: importing the whole
+     * reached range instead copied every owned value into it first, 5.6 %
+     * of a run of the 10^6 bar of benchmarks/scaling.
+     */
+    std::unique_ptr<Epetra_Vector> edges;
+    /** The plan that fills `edges` from an owned vector, built once. */
     std::unique_ptr<Epetra_Import> importer;
+
+    /** Set `segment_source`, `edge_ranges`, `edges` and `importer`. */
+    void
+    read_edges();
   };
 
   /**
