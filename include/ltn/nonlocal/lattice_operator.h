@@ -193,8 +193,8 @@ namespace ltn
     /**
      * The values near the ends of this rank's range, owned or not, that
      * the segments with `segment_source` 1 or 2 read: importing the whole
-     * reached range instead copied every owned value into it first, 5.6 %
-     * of a run of the 10^6 bar of benchmarks/scaling.
+     * reached range instead copied every owned value into it first, in
+     * every product.
      */
     std::unique_ptr<Epetra_Vector> edges;
     /** The plan that fills `edges` from an owned vector, built once. */
