@@ -60,7 +60,13 @@ namespace ltn
     std::unique_ptr<Epetra_MultiVector> no_modes;
     data.set_parameters(parameters, no_modes, model.surrogate);
     parameters.set("coarse: max size", 200);
+    // ML's finest level multiplies by the surrogate's stencil, not by its
+    // compressed rows (section 16).
     amg.initialize(model.surrogate, parameters);
+    stencil =
+      std::make_unique<StencilMatrix>(model.surrogate.trilinos_matrix());
+    if (!stencil->is_stencil() || !stencil->serve_finest_level(amg))
+      stencil.reset();
     node_src.reinit(model.surrogate.locally_owned_domain_indices(),
                     model.communicator);
     node_dst.reinit(node_src);
@@ -111,6 +117,7 @@ namespace ltn
   ModelPreconditioner::memory_consumption() const
   {
     return amg.memory_consumption() + amg_matrix.memory_consumption() +
+           (stencil ? stencil->memory_consumption() : 0) +
            node_src.memory_consumption() + node_dst.memory_consumption() +
            nodes.size() * (sizeof(unsigned int) + sizeof(double));
   }

@@ -4,6 +4,9 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
+#include <ltn/coupling/stencil_matrix.h>
+
+#include <memory>
 
 namespace ltn
 {
@@ -45,6 +48,11 @@ namespace ltn
      */
     TrilinosWrappers::SparseMatrix    amg_matrix;
     TrilinosWrappers::PreconditionAMG amg;
+    /**
+     * The surrogate's stencil, which gives the finest level of `amg` its
+     * product where its rows are one; else empty.
+     */
+    std::unique_ptr<StencilMatrix> stencil;
     /** One component of a vector, over the surrogate's nodes. */
     mutable TrilinosWrappers::MPI::Vector node_src, node_dst;
     /** `short_wave_weight` over the surrogate's diagonal, per owned row. */
