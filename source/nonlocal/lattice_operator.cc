@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <bitset>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <numeric>
@@ -31,7 +32,8 @@ namespace ltn
     const IndexSet                  &owned_particles,
     const std::function<unsigned int(const LatticeIndex &)>    &shared_rows_of,
     const std::function<void(types::global_dof_index, Rows &)> &rows_of,
-    const MPI_Comm                                              communicator)
+    const MPI_Comm                                              communicator,
+    const ScaledBondRows<dim>                                  &scaled_rows)
     : lattice(lattice)
     , offsets(offsets)
     , n_components(n_components)
@@ -176,6 +178,8 @@ namespace ltn
           interior[p - first] = all_shared;
         }
 
+    find_scaled_rows(scaled_rows, rows_of);
+
     // The other rows, stored.
     const types::global_dof_index n_dofs = n_components * lattice.n_particles();
     owned_dofs                           = IndexSet(n_dofs);
@@ -192,25 +196,29 @@ namespace ltn
     // a product with them is a copy of owned values, where a matrix
     // imported its columns, the collar's values, first (with it, Epetra's
     // CopyAndPermute went from 4.8 % to 3.9 % of a run of the 1e5 bar of
-    // benchmarks/scaling on two ranks).
-    std::vector<unsigned char> identity(end - first, 0);
+    // benchmarks/scaling on two ranks). They and the scaled rows are
+    // computed, not stored.
+    std::vector<unsigned char> computed(end - first, 0);
     IndexSet                   stored(lattice.n_particles());
     ParticleRows               particle_rows;
     for (auto p = first; p < end; ++p)
       if (const unsigned int own = all_rows & ~shared[p - reach_first])
         {
+          const int s         = scaled_index[p - reach_first];
+          computed[p - first] = s < 0 ? 0 : scaled[s].rows;
           n_own_rows += std::bitset<8>(own).count();
           rows_of(p, particle_rows);
           for (unsigned int c = 0; c < n_components; ++c)
-            if ((own >> c) & 1u && particle_rows[c].size() == 1 &&
+            if ((own & ~computed[p - first]) >> c & 1u &&
+                particle_rows[c].size() == 1 &&
                 particle_rows[c][0].first == n_components * p + c &&
                 particle_rows[c][0].second == 1.)
               {
-                identity[p - first] |= 1u << c;
+                computed[p - first] |= 1u << c;
                 identity_rows[(eliminated_rows >> c) & 1u].push_back(
                   n_components * (p - first) + c);
               }
-          if (own & ~identity[p - first])
+          if (own & ~computed[p - first])
             stored.add_index(p);
         }
     stored.compress();
@@ -219,9 +227,9 @@ namespace ltn
       stored,
       n_components,
       rows_of,
-      [this, &identity](const types::global_dof_index p) {
+      [this, &computed](const types::global_dof_index p) {
         return all_rows & ~static_cast<unsigned int>(shared[p - reach_first]) &
-               ~static_cast<unsigned int>(identity[p - first]);
+               ~static_cast<unsigned int>(computed[p - first]);
       },
       {all_rows & ~eliminated_rows, eliminated_rows},
       true,
@@ -315,6 +323,357 @@ namespace ltn
       TrilinosWrappers::MPI::Vector(owned_dofs, communicator)
         .trilinos_vector()
         .Map());
+  }
+
+
+
+  template <int dim>
+  bool
+  LatticeOperator<dim>::intact(const std::size_t s, const unsigned int k) const
+  {
+    return (scaled_bonds[s * words_per_particle + k / 64] >> (k % 64)) & 1u;
+  }
+
+
+
+  template <int dim>
+  double
+  LatticeOperator<dim>::q_of(const std::int64_t j) const
+  {
+    const int s = scaled_index[j - reach_first];
+    return s < 0 ? 1. : scaled[s].q;
+  }
+
+
+
+  namespace
+  {
+    /** `q_i`, `q_j` or their mean, as @p scale says. */
+    template <typename Scale>
+    double
+    scale_of(const Scale scale, const double q_i, const double q_j)
+    {
+      return scale == Scale::own     ? q_i :
+             scale == Scale::partner ? q_j :
+                                       0.5 * (q_i + q_j);
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  void
+  LatticeOperator<dim>::find_scaled_rows(
+    const ScaledBondRows<dim>                                  &scaled_rows,
+    const std::function<void(types::global_dof_index, Rows &)> &rows_of)
+  {
+    scaled_index.assign(reach_end - reach_first, -1);
+    if (!scaled_rows.bonds_of)
+      return;
+    const unsigned int n_c = n_components, n_offsets = offsets.size();
+    const unsigned int block_size = n_c * n_c;
+    AssertThrow(scaled_rows.bond_scale.size() == block_size &&
+                  scaled_rows.centre_scale.size() == block_size &&
+                  scaled_rows.centre_sign.size() == block_size,
+                ExcMessage("a scaling table is not one per block entry"));
+    scaling            = scaled_rows;
+    scaling.bonds_of   = nullptr;
+    words_per_particle = (n_offsets + 63) / 64;
+
+    // Every particle's q first: a row reads its partners'. One whose rows
+    // are all the shared ones has all its bonds, and q = 1.
+    std::vector<bool> bonds;
+    const auto        neighbour_of = [&](const types::global_dof_index p,
+                                  const unsigned int            k) {
+      LatticeIndex neighbour = lattice.index(p);
+      for (unsigned int d = 0; d < dim; ++d)
+        neighbour[d] += offsets[k][d];
+      return lattice.number(neighbour);
+    };
+    for (auto p = reach_first; p < reach_end; ++p)
+      {
+        double q;
+        if (shared[p - reach_first] == all_rows ||
+            !scaled_rows.bonds_of(lattice.index(p), bonds, q))
+          continue;
+        AssertDimension(bonds.size(), n_offsets);
+        scaled_index[p - reach_first] = scaled.size();
+        scaled.push_back({std::int64_t(p), q, 0});
+        scaled_bonds.resize(scaled.size() * words_per_particle, 0);
+        for (unsigned int k = 0; k < n_offsets; ++k)
+          if (bonds[k])
+            scaled_bonds[(scaled.size() - 1) * words_per_particle + k / 64] |=
+              std::uint64_t(1) << (k % 64);
+      }
+    // q of any particle: past the reached range (the partners of a ghost
+    // particle) asked of the model.
+    const auto q_at = [&](const types::global_dof_index j) {
+      if (j >= reach_first && j < reach_end)
+        return q_of(j);
+      double q;
+      return scaled_rows.bonds_of(lattice.index(j), bonds, q) ? q : 1.;
+    };
+
+    // B_k split by the number its entries scale with: O_k by q_i (half of
+    // the mean's), P_k by q_j (the other half).
+    own_blocks.assign(n_offsets * block_size, 0.);
+    partner_blocks.assign(n_offsets * block_size, 0.);
+    for (unsigned int k = 0; k < n_offsets; ++k)
+      for (unsigned int e = 0; e < block_size; ++e)
+        {
+          const double entry             = blocks[k * block_size + e];
+          const auto   scale             = scaled_rows.bond_scale[e];
+          using Scale                    = typename ScaledBondRows<dim>::Scale;
+          own_blocks[k * block_size + e] = scale == Scale::own  ? entry :
+                                           scale == Scale::mean ? 0.5 * entry :
+                                                                  0.;
+          partner_blocks[k * block_size + e] =
+            scale == Scale::partner ? entry :
+            scale == Scale::mean    ? 0.5 * entry :
+                                      0.;
+        }
+
+    // C0 = C - sigma o sum_k B_k.
+    std::vector<double> centre0(blocks.begin() + n_offsets * block_size,
+                                blocks.end());
+    for (unsigned int k = 0; k < n_offsets; ++k)
+      for (unsigned int e = 0; e < block_size; ++e)
+        centre0[e] -= scaled_rows.centre_sign[e] * blocks[k * block_size + e];
+
+    // Each row that equals the model's own is computed.
+    scaled_centres.assign(scaled.size() * block_size, 0.);
+    Rows                                                    rows(n_c);
+    std::vector<std::pair<types::global_dof_index, double>> formula, model;
+    for (std::size_t s = 0; s < scaled.size(); ++s)
+      {
+        const types::global_dof_index i      = scaled[s].number;
+        const double                  q_i    = scaled[s].q;
+        double                       *centre = &scaled_centres[s * block_size];
+        std::copy(centre0.begin(), centre0.end(), centre);
+        std::vector<std::pair<types::global_dof_index, double>> partners;
+        for (unsigned int k = 0; k < n_offsets; ++k)
+          if (intact(s, k))
+            {
+              const auto j = neighbour_of(i, k);
+              AssertThrow(j != ParticleLattice<dim>::invalid,
+                          ExcMessage("an intact bond leaves the lattice"));
+              partners.emplace_back(j, q_at(j));
+              for (unsigned int e = 0; e < block_size; ++e)
+                centre[e] +=
+                  scaled_rows.centre_sign[e] *
+                  scale_of(scaled_rows.centre_scale[e], q_i, q_at(j)) *
+                  blocks[k * block_size + e];
+            }
+        rows_of(i, rows);
+        for (unsigned int a = 0; a < n_c; ++a)
+          {
+            if ((shared[i - reach_first] >> a) & 1u)
+              continue;
+            formula.clear();
+            for (unsigned int b = 0; b < n_c; ++b)
+              formula.emplace_back(n_c * i + b, centre[a * n_c + b]);
+            unsigned int bond = 0;
+            for (unsigned int k = 0; k < n_offsets; ++k)
+              if (intact(s, k))
+                {
+                  const auto [j, q_j] = partners[bond++];
+                  for (unsigned int b = 0; b < n_c; ++b)
+                    formula.emplace_back(
+                      n_c * j + b,
+                      scale_of(scaled_rows.bond_scale[a * n_c + b], q_i, q_j) *
+                        blocks[(k * n_c + a) * n_c + b]);
+                }
+            model = rows[a];
+            // Equal up to round-off, entries absent from one being zeros of
+            // the other.
+            const auto by_column = [](const auto &x, const auto &y) {
+              return x.first < y.first;
+            };
+            std::sort(formula.begin(), formula.end(), by_column);
+            std::sort(model.begin(), model.end(), by_column);
+            double largest = 0;
+            for (const auto &entry : model)
+              largest = std::max(largest, std::abs(entry.second));
+            bool equal = true;
+            auto f = formula.begin(), m = model.begin();
+            while (equal && (f != formula.end() || m != model.end()))
+              {
+                double difference;
+                if (m == model.end() ||
+                    (f != formula.end() && f->first < m->first))
+                  difference = (f++)->second;
+                else if (f == formula.end() || m->first < f->first)
+                  difference = (m++)->second;
+                else
+                  difference = (f++)->second - (m++)->second;
+                equal = std::abs(difference) <= 1e-12 * largest;
+              }
+            if (equal && largest > 0)
+              scaled[s].rows |= 1u << a;
+          }
+      }
+
+    // Only the particles with scaled rows or a q other than 1 (but for
+    // round-off) kept: the others (the collar's, whose rows are
+    // identities) would hold a bond mask and a centre each for nothing.
+    std::size_t kept = 0;
+    for (std::size_t s = 0; s < scaled.size(); ++s)
+      {
+        scaled_index[scaled[s].number - reach_first] = -1;
+        if (scaled[s].rows == 0 && std::abs(scaled[s].q - 1.) < 1e-12)
+          continue;
+        scaled[kept] = scaled[s];
+        std::copy_n(&scaled_bonds[s * words_per_particle],
+                    words_per_particle,
+                    &scaled_bonds[kept * words_per_particle]);
+        std::copy_n(&scaled_centres[s * block_size],
+                    block_size,
+                    &scaled_centres[kept * block_size]);
+        scaled_index[scaled[s].number - reach_first] = kept++;
+      }
+    scaled.resize(kept);
+    scaled.shrink_to_fit();
+    scaled_bonds.resize(kept * words_per_particle);
+    scaled_bonds.shrink_to_fit();
+    scaled_centres.resize(kept * block_size);
+    scaled_centres.shrink_to_fit();
+
+    // This rank's particles with scaled rows, and those a scaled row reads.
+    const auto segment_of = [this](const std::int64_t p) {
+      return std::size_t(std::upper_bound(segment_start.begin(),
+                                          segment_start.end(),
+                                          types::global_dof_index(p)) -
+                         segment_start.begin() - 1);
+    };
+    std::vector<std::int64_t> read;
+    for (std::size_t s = 0; s < scaled.size(); ++s)
+      {
+        if (scaled[s].rows == 0)
+          continue;
+        const std::int64_t i = scaled[s].number;
+        if (i >= std::int64_t(first) && i < std::int64_t(end))
+          {
+            scaled_owned.emplace_back(s, segment_of(i));
+            n_scaled += std::bitset<8>(scaled[s].rows).count();
+            read.push_back(i);
+          }
+        for (unsigned int k = 0; k < n_offsets; ++k)
+          if (intact(s, k))
+            {
+              const std::int64_t j = neighbour_of(i, k);
+              if (j >= std::int64_t(first) && j < std::int64_t(end))
+                read.push_back(j);
+            }
+      }
+    std::sort(read.begin(), read.end());
+    read.erase(std::unique(read.begin(), read.end()), read.end());
+    for (const std::int64_t j : read)
+      touched.emplace_back(j, segment_of(j));
+  }
+
+
+
+  template <int dim>
+  template <int n_c, int a0, int a1, typename Values>
+  void
+  LatticeOperator<dim>::apply_scaled_rows(const Values &value,
+                                          const bool    transpose,
+                                          double       *y) const
+  {
+    const unsigned int     n_offsets  = offsets.size();
+    constexpr unsigned int block_size = n_c * n_c;
+    if (!transpose)
+      {
+        // Row a of particle i, a0 <= a < a1: C_i x_i, then over its intact
+        // bonds q_i (O_k x_j) summed apart from q_j (P_k x_j).
+        constexpr unsigned int subset = (1u << a1) - (1u << a0);
+        for (const auto &[s, segment] : scaled_owned)
+          {
+            const unsigned int used = scaled[s].rows & subset;
+            if (used == 0)
+              continue;
+            const std::int64_t i      = scaled[s].number;
+            const double      *xi     = value(i);
+            const double      *centre = &scaled_centres[s * block_size];
+            // A running sum per entry of the block, as in apply_stencil():
+            // summed over b per bond, the rows took 9 % of a run of the 1e5
+            // bar in shuffles.
+            std::array<std::array<double, n_c>, n_c> own{}, partner{};
+            for (int a = a0; a < a1; ++a)
+              for (int b = 0; b < n_c; ++b)
+                partner[a][b] = centre[a * n_c + b] * xi[b];
+            const std::int64_t *origin = &bond_origin[segment * n_offsets];
+            for (unsigned int k = 0; k < n_offsets; ++k)
+              if (intact(s, k))
+                {
+                  const std::int64_t j   = origin[k] + i;
+                  const double      *xj  = value(j);
+                  const double       q_j = q_of(j);
+                  const double      *O   = &own_blocks[k * block_size];
+                  const double      *P   = &partner_blocks[k * block_size];
+                  for (int a = a0; a < a1; ++a)
+                    for (int b = 0; b < n_c; ++b)
+                      {
+                        own[a][b] += O[a * n_c + b] * xj[b];
+                        partner[a][b] += q_j * P[a * n_c + b] * xj[b];
+                      }
+                }
+            double *yi = y + (i - std::int64_t(first)) * n_c;
+            for (int a = a0; a < a1; ++a)
+              if ((used >> a) & 1u)
+                {
+                  double total = 0;
+                  for (int b = 0; b < n_c; ++b)
+                    total += scaled[s].q * own[a][b] + partner[a][b];
+                  yi[a] += total;
+                }
+          }
+        return;
+      }
+    // Column b of particle j, a0 <= b < a1 (the caller reads no other):
+    // C_j^T x_j and, from each partner i = j + o_k with scaled rows, its
+    // bond -o_k back to j, q_i O^T x_i plus q_j P^T x_i.
+    for (const auto &[j, segment] : touched)
+      {
+        std::array<double, n_c> own{}, partner{};
+        if (const int s = scaled_index[j - reach_first];
+            s >= 0 && scaled[s].rows != 0)
+          {
+            const double *xj     = value(j);
+            const double *centre = &scaled_centres[s * block_size];
+            for (int a = 0; a < n_c; ++a)
+              if ((scaled[s].rows >> a) & 1u)
+                for (int b = a0; b < a1; ++b)
+                  own[b] += centre[a * n_c + b] * xj[a];
+          }
+        const std::int64_t *origin = &bond_origin[segment * n_offsets];
+        const std::int64_t *lo     = &bond_lo[segment * n_offsets];
+        const std::int64_t *hi     = &bond_hi[segment * n_offsets];
+        for (unsigned int k = 0; k < n_offsets; ++k)
+          {
+            const std::int64_t i = origin[k] + j;
+            if (i < lo[k] || i >= hi[k])
+              continue;
+            const int s = scaled_index[i - reach_first];
+            if (s < 0 || scaled[s].rows == 0 || !intact(s, reverse[k]))
+              continue;
+            const double *xi  = value(i);
+            const double *O   = &own_blocks[reverse[k] * block_size];
+            const double *P   = &partner_blocks[reverse[k] * block_size];
+            const double  q_i = scaled[s].q;
+            for (int a = 0; a < n_c; ++a)
+              if ((scaled[s].rows >> a) & 1u)
+                for (int b = a0; b < a1; ++b)
+                  {
+                    own[b] += q_i * O[a * n_c + b] * xi[a];
+                    partner[b] += P[a * n_c + b] * xi[a];
+                  }
+          }
+        const double q_j = q_of(j);
+        double      *yj  = y + (j - std::int64_t(first)) * n_c;
+        for (int b = a0; b < a1; ++b)
+          yj[b] += own[b] + q_j * partner[b];
+      }
   }
 
 
@@ -595,6 +954,23 @@ namespace ltn
                       else
                         apply_stencil<n, false, r0, r1>(x, x_first, y);
                     });
+    const auto value = [&](const std::int64_t j) {
+      if (j >= std::int64_t(first) && j < std::int64_t(end))
+        return x[0] + (j - std::int64_t(first)) * n_components;
+      const unsigned int range = j < edge_ranges[0].second ? 0 : 1;
+      return x[1 + range] + (j - edge_ranges[range].first) * n_components;
+    };
+    if (!scaled_owned.empty() || !touched.empty())
+      with_block_size(n_components,
+                      n_eliminated_components,
+                      rows,
+                      [&](auto n_c, auto a0, auto a1) {
+                        apply_scaled_rows<decltype(n_c)::value,
+                                          decltype(a0)::value,
+                                          decltype(a1)::value>(value,
+                                                               transpose,
+                                                               y);
+                      });
     for (const unsigned int part : {0u, 1u})
       {
         const bool in_subset =
@@ -647,6 +1023,13 @@ namespace ltn
            (own_rows_entries[0].size() + own_rows_entries[1].size() +
             identity_rows[0].size() + identity_rows[1].size()) *
              sizeof(unsigned int) +
+           scaled.size() * sizeof(ScaledParticle) +
+           scaled_index.size() * sizeof(int) +
+           scaled_bonds.size() * sizeof(std::uint64_t) +
+           (scaled_centres.size() + own_blocks.size() + partner_blocks.size()) *
+             sizeof(double) +
+           (scaled_owned.size() + touched.size()) *
+             sizeof(std::pair<std::int64_t, std::size_t>) +
            offsets.size() * sizeof(LatticeIndex);
   }
 
@@ -668,6 +1051,27 @@ namespace ltn
     return Utilities::MPI::sum(n_own_rows, communicator);
   }
 
+
+
+  template <int dim>
+  types::global_dof_index
+  LatticeOperator<dim>::n_scaled_rows() const
+  {
+    return Utilities::MPI::sum(n_scaled, communicator);
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  LatticeOperator<dim>::n_compressed_rows() const
+  {
+    return Utilities::MPI::sum(types::global_dof_index(
+                                 own_rows_entries[0].size() +
+                                 own_rows_entries[1].size()),
+                               communicator);
+  }
+
   template <int dim>
   void
   store_particle_operator(
@@ -679,8 +1083,9 @@ namespace ltn
     const std::function<unsigned int(
       const typename ParticleLattice<dim>::LatticeIndex &)> &shared_rows_of,
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
-    const bool     matrix_free,
-    DiscreteModel &model)
+    const bool                 matrix_free,
+    DiscreteModel             &model,
+    const ScaledBondRows<dim> &scaled_rows)
   {
     if (matrix_free)
       {
@@ -692,7 +1097,8 @@ namespace ltn
                                                  owned_particles,
                                                  shared_rows_of,
                                                  rows_of,
-                                                 model.communicator);
+                                                 model.communicator,
+                                                 scaled_rows);
         model.relevant    = op->relevant_dofs();
         model.matrix_free = op;
         model.matrix.clear();
@@ -728,7 +1134,8 @@ namespace ltn
       const typename ParticleLattice<dim>::LatticeIndex &)> &,            \
     const std::function<void(types::global_dof_index, ParticleRows &)> &, \
     const bool,                                                           \
-    DiscreteModel &);
+    DiscreteModel &,                                                      \
+    const ScaledBondRows<dim> &);
   LTN_INSTANTIATE(2)
   LTN_INSTANTIATE(3)
 #undef LTN_INSTANTIATE

@@ -209,6 +209,53 @@ namespace ltn
 
 
   template <int dim>
+  ScaledBondRows<dim>
+  ParticleElasticity<dim>::scaled_bond_rows() const
+  {
+    // With q = m / m_i (doc/discretization.md, section 15): the bond
+    // stiffness scales with (1/m_i + 1/m_j), so the displacement blocks
+    // by the mean of q_i and q_j; a displacement row reads the partner's
+    // dilatation over m_j and its own over m_i; the dilatation row is
+    // over m_i. The centre sums the displacement blocks with the opposite
+    // sign, the dilatation's columns of a displacement row with the same.
+    using Scale             = typename ScaledBondRows<dim>::Scale;
+    const unsigned int  n_c = n_components;
+    ScaledBondRows<dim> rows;
+    rows.bond_scale.assign(n_c * n_c, Scale::own);
+    rows.centre_scale.assign(n_c * n_c, Scale::own);
+    rows.centre_sign.assign(n_c * n_c, 0);
+    for (unsigned int a = 0; a < n_c; ++a)
+      for (unsigned int b = 0; b < n_c; ++b)
+        {
+          const unsigned int e = a * n_c + b;
+          if (a < dim && b < dim)
+            {
+              rows.bond_scale[e]   = Scale::mean;
+              rows.centre_scale[e] = Scale::mean;
+              rows.centre_sign[e]  = -1;
+            }
+          else if (a < dim)
+            {
+              rows.bond_scale[e]  = Scale::partner;
+              rows.centre_sign[e] = 1;
+            }
+          else if (b < dim)
+            rows.centre_sign[e] = -1;
+        }
+    rows.bonds_of =
+      [this](const LatticeIndex &index, std::vector<bool> &intact, double &q) {
+        if (!complete(index))
+          return false;
+        const double m = intact_bonds(index, intact);
+        q              = stencil.weighted_volume() / m;
+        return m > 0;
+      };
+    return rows;
+  }
+
+
+
+  template <int dim>
   void
   ParticleElasticity<dim>::particle_rows(const types::global_dof_index n,
                                          Rows &rows) const
@@ -310,7 +357,8 @@ namespace ltn
         particle_rows(n, rows);
       },
       matrix_free,
-      model);
+      model,
+      scaled_bond_rows());
 
     // The surrogate for AMG: the Laplacian on the lattice, for each
     // displacement component, scaled to the diagonal of the displacement

@@ -70,16 +70,22 @@ namespace
     const auto &op = dynamic_cast<const LatticeOperator<dim> &>(
       *matrix_free->get_model().matrix_free);
     const auto n = matrix_free->get_lattice().n_particles();
-    INFO(dim << "D LPS, m = " << m << ": " << op.n_stored_rows() << " of " << n
-             << " rows stored, difference " << difference);
+    INFO(dim << "D LPS, m = " << m << ": " << op.n_stored_rows() << " of "
+             << (dim + 1) * n << " rows not shared, " << op.n_scaled_rows()
+             << " scaled, " << op.n_compressed_rows()
+             << " compressed, difference " << difference);
     CHECK(difference < 1e-13);
     for (const RowSubset rows : {RowSubset::kept, RowSubset::eliminated})
       CHECK(product_difference(assembled->get_model(),
                                matrix_free->get_model(),
                                rows) < 1e-13);
-    // The shared stencil serves most particles, not all.
+    // The shared stencil serves most particles, not all; the rows next to
+    // cracks are the shared ones scaled, and no row is left to a sparse
+    // matrix.
     CHECK(op.n_stored_rows() > 0);
     CHECK(op.n_stored_rows() < (dim + 1) * n);
+    CHECK(op.n_scaled_rows() > 0);
+    CHECK(op.n_compressed_rows() == 0);
     auto rhs_difference = assembled->get_model().rhs;
     rhs_difference -= matrix_free->get_model().rhs;
     CHECK(rhs_difference.linfty_norm() == 0);

@@ -13,6 +13,7 @@
 #include <Epetra_Vector.h>
 
 #include <array>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <utility>
@@ -21,6 +22,49 @@
 namespace ltn
 {
   using namespace dealii;
+
+  /**
+   * The rows of particles whose bonds are some of the stencil's and whose
+   * blocks are the shared ones scaled per particle (doc/discretization.md,
+   * section 15, "Rows next to a crack"): particle `i` with intact bonds
+   * `I_i` and scale `q_i` (1 where it has all its bonds) has
+   *
+   *   (M x)_i = C_i x_i + sum_{k in I_i} (s_{ik} o B_k) x_{i + o_k},
+   *   C_i     = C0 + sigma o sum_{k in I_i} (t_{ik} o B_k),
+   *
+   * `o` entry by entry: entry `(a, b)` of `s_{ik}` is `q_i`, `q_j` or their
+   * mean (`j = i + o_k`) as `bond_scale` says, of `t_{ik}` as
+   * `centre_scale` says, `sigma` is -1, 0 or 1, and `C0 = C - sigma o sum_k
+   * B_k`, so that a particle with all its bonds and `q = 1` has the shared
+   * rows. LatticeOperator checks each particle's rows against the model's
+   * own before it computes them so; any other row stays stored.
+   */
+  template <int dim>
+  struct ScaledBondRows
+  {
+    enum class Scale : unsigned char
+    {
+      own,
+      partner,
+      mean
+    };
+    /** Per entry of a block, row-major: how a bond's entries scale. */
+    std::vector<Scale> bond_scale;
+    /** Per entry of the centre block: how its sum over bonds scales. */
+    std::vector<Scale> centre_scale;
+    /** Per entry of the centre block: sigma. */
+    std::vector<int> centre_sign;
+    /**
+     * For a particle: whether its rows may be of this form, and if so its
+     * intact bonds (per offset) and its `q`. Empty: no such rows.
+     */
+    std::function<bool(const typename ParticleLattice<dim>::LatticeIndex &,
+                       std::vector<bool> &,
+                       double &)>
+      bonds_of;
+  };
+
+
 
   /**
    * A particle model's operator without its matrix (doc/discretization.md,
@@ -34,7 +78,9 @@ namespace ltn
    * stored once. Near boundaries some of a particle's component rows may
    * still be the shared ones (the dilatation row of LPS in the first horizon
    * of the collar, where the displacement rows are identities); a mask per
-   * particle says which. Only the other rows are stored, as a sparse matrix
+   * particle says which. Of the other rows, identities are copies and the
+   * shared ones scaled (ScaledBondRows) are computed; only the rest are
+   * stored, as a sparse matrix
    * (`own_rows`, the kept and the eliminated components' rows apart, so
    * that a product of one subset of rows applies only its own). Degrees of
    * freedom are numbered particle by particle,
@@ -69,6 +115,8 @@ namespace ltn
      *   (bit `c` for component `c`) that are the shared ones.
      * @param rows_of the row of any particle, for those that do not and
      *   to read the shared one from.
+     * @param scaled_rows the form of the rows that are the shared ones
+     *   scaled, which are then computed, not stored.
      */
     LatticeOperator(
       const ParticleLattice<dim>      &lattice,
@@ -78,7 +126,8 @@ namespace ltn
       const IndexSet                  &owned_particles,
       const std::function<unsigned int(const LatticeIndex &)> &shared_rows_of,
       const std::function<void(types::global_dof_index, Rows &)> &rows_of,
-      const MPI_Comm                                              communicator);
+      const MPI_Comm                                              communicator,
+      const ScaledBondRows<dim> &scaled_rows = ScaledBondRows<dim>());
 
     void
     vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
@@ -93,9 +142,20 @@ namespace ltn
     const IndexSet &
     relevant_dofs() const;
 
-    /** The number of component rows of all ranks that are stored. */
+    /**
+     * The number of component rows of all ranks that are not the shared
+     * ones: identities, the shared ones scaled, and the stored ones.
+     */
     types::global_dof_index
     n_stored_rows() const;
+
+    /** The number of those that are the shared ones scaled (all ranks). */
+    types::global_dof_index
+    n_scaled_rows() const;
+
+    /** The number of those that a sparse matrix stores (all ranks). */
+    types::global_dof_index
+    n_compressed_rows() const;
 
   private:
     /**
@@ -203,11 +263,74 @@ namespace ltn
     /** Set `segment_source`, `edge_ranges`, `edges` and `importer`. */
     void
     read_edges();
+
+    /**
+     * A particle whose rows in the mask `rows` are the shared ones scaled
+     * (possibly none: a partner's `q`): its number and `q`. Its bonds and
+     * `C_i` are at its index in `scaled_bonds` and `scaled_centres`.
+     */
+    struct ScaledParticle
+    {
+      std::int64_t  number;
+      double        q;
+      unsigned char rows;
+    };
+    /** The scaled rows' form (its tables; `bonds_of` is not kept). */
+    ScaledBondRows<dim> scaling;
+    /**
+     * The particles of the reached range whose rows are scaled, or whose
+     * `q` is not 1; per particle of the range, its index here or -1.
+     */
+    std::vector<ScaledParticle> scaled;
+    std::vector<int>            scaled_index;
+    /** Per scaled particle: the words of its intact bonds' bits. */
+    std::vector<std::uint64_t> scaled_bonds;
+    unsigned int               words_per_particle = 0;
+    /** Per scaled particle: `C_i`, row-major. */
+    std::vector<double> scaled_centres;
+    /**
+     * Per offset: the entries of `B_k` a bond scales by `q_i` and by `q_j`
+     * (the mean's half in each), row-major.
+     */
+    std::vector<double> own_blocks, partner_blocks;
+    /**
+     * This rank's particles with scaled rows (forward), and those with a
+     * scaled partner or scaled rows (transposed): the index into `scaled`
+     * or the number, and the segment.
+     */
+    std::vector<std::pair<std::int64_t, std::size_t>> scaled_owned, touched;
+    types::global_dof_index                           n_scaled = 0;
+
+    /** Is bond `k` of scaled particle `s` intact? */
+    bool
+    intact(const std::size_t s, const unsigned int k) const;
+
+    /** `q` of particle @p j of the reached range. */
+    double
+    q_of(const std::int64_t j) const;
+
+    /** Find the scaled particles (`scaled_rows` as for the constructor). */
+    void
+    find_scaled_rows(
+      const ScaledBondRows<dim>                                  &scaled_rows,
+      const std::function<void(types::global_dof_index, Rows &)> &rows_of);
+
+    /**
+     * Add the scaled rows' part of `M x` at the components `[a0, a1)` of
+     * each particle (of `M^T x`: the columns), to the owned values @p y;
+     * @p value gives a particle's values.
+     */
+    template <int n_c, int a0, int a1, typename Values>
+    void
+    apply_scaled_rows(const Values &value,
+                      const bool    transpose,
+                      double       *y) const;
   };
 
   /**
    * Store a particle model's operator in @p model: with @p matrix_free a
-   * LatticeOperator (the other arguments as its constructor's), otherwise
+   * LatticeOperator (the other arguments as its constructor's, @p
+   * scaled_rows included), otherwise
    * the assembled rows of all @p owned_particles; and the degrees of
    * freedom its rows read in `model.relevant`.
    */
@@ -222,6 +345,7 @@ namespace ltn
     const std::function<unsigned int(
       const typename ParticleLattice<dim>::LatticeIndex &)> &shared_rows_of,
     const std::function<void(types::global_dof_index, ParticleRows &)> &rows_of,
-    const bool     matrix_free,
-    DiscreteModel &model);
+    const bool                 matrix_free,
+    DiscreteModel             &model,
+    const ScaledBondRows<dim> &scaled_rows = ScaledBondRows<dim>());
 } // namespace ltn

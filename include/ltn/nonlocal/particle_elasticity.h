@@ -6,6 +6,7 @@
 #include <ltn/base/discrete_model.h>
 #include <ltn/base/field_errors.h>
 #include <ltn/nonlocal/kernel.h>
+#include <ltn/nonlocal/lattice_operator.h>
 #include <ltn/nonlocal/lattice_rows.h>
 #include <ltn/nonlocal/particle_lattice.h>
 #include <ltn/nonlocal/peridynamic_stencil.h>
@@ -92,6 +93,15 @@ namespace ltn
      */
     unsigned int
     shared_rows(const LatticeIndex &index) const;
+
+    /**
+     * The form of the other rows of particles with a complete
+     * neighbourhood, cut bonds or not: the shared ones scaled by the
+     * weighted volumes of the particle and its partners
+     * (LatticeOperator computes them, not stores them).
+     */
+    ScaledBondRows<dim>
+    scaled_bond_rows() const;
 
     const DiscreteModel &
     get_model() const;
