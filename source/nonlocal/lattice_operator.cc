@@ -457,12 +457,12 @@ namespace ltn
               const auto j = neighbour_of(i, k);
               AssertThrow(j != ParticleLattice<dim>::invalid,
                           ExcMessage("an intact bond leaves the lattice"));
-              partners.emplace_back(j, q_at(j));
+              const double q_j = q_at(j);
+              partners.emplace_back(j, q_j);
               for (unsigned int e = 0; e < block_size; ++e)
-                centre[e] +=
-                  scaled_rows.centre_sign[e] *
-                  scale_of(scaled_rows.centre_scale[e], q_i, q_at(j)) *
-                  blocks[k * block_size + e];
+                centre[e] += scaled_rows.centre_sign[e] *
+                             scale_of(scaled_rows.centre_scale[e], q_i, q_j) *
+                             blocks[k * block_size + e];
             }
         rows_of(i, rows);
         for (unsigned int a = 0; a < n_c; ++a)

@@ -87,7 +87,8 @@ namespace ltn
    * `n_components p + c`.
    *
    * `Tvmult` gathers too: `(M^T y)_j = C^T y_j + sum_k B_k^T y_{j - o_k}`
-   * over the shared rows of the particles `j - o_k`, plus `own_rows^T y`. Both
+   * over the shared rows of the particles `j - o_k`, plus the scaled rows'
+   * blocks gathered the same way, plus `own_rows^T y`. Both
    * read this rank's particles and the contiguous range of numbers that
    * their bonds reach, imported once per product.
    *
