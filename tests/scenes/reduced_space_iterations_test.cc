@@ -101,7 +101,7 @@ TEST_CASE("LPS: the scalable solvers' iterations at fixed eps/h grow by less "
   // scenes: the two-level reduced-space CG outside, CG with the lattice
   // surrogate's V-cycle on the matrix-free particle model inside (the FEM
   // model factorized). Measured 27, 30, 34, 37 outer iterations and 13.4
-  // to 15.1 nonlocal CG iterations per solve. The diffusion scene of the
+  // to 16.8 nonlocal CG iterations per solve. The diffusion scene of the
   // first test case grows 2.2x over its three halvings: the part of H_nn
   // that D_n misses grows with the overlap's width over eps there
   // (doc/discretization.md, sections 17 and 19).

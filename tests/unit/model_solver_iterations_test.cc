@@ -102,7 +102,7 @@ namespace
    * GMRES and CG on a model: less than 1.5x more iterations at h0/8 than at
    * h0 = 1/16, and at most @p most at every h (the preconditioner's
    * short-wave term, doc/discretization.md section 16: without it these
-   * scenes take 28-31).
+   * scenes take 35-40 with the V-cycle's one Chebyshev sweep).
    */
   template <typename MakeParticles>
   void
@@ -179,7 +179,7 @@ TEST_CASE("particle model Krylov iterations do not grow with 1/h at fixed "
                           matrix_free);
       return particles;
     };
-    check_growth(make, 16); // measured 12, 13, 13, 14
+    check_growth(make, 16); // measured 12, 12, 15, 15
   }
   SECTION("2D LPS with a crack, eps = 2h")
   {
@@ -205,7 +205,9 @@ TEST_CASE("particle model Krylov iterations do not grow with 1/h at fixed "
                           matrix_free);
       return particles;
     };
-    check_growth(make, 25); // measured 20, 20 or 21, 22, 23
+    // Measured 22, 22, 26, 26; 20, 20 or 21, 22, 23 with three Chebyshev
+    // sweeps, which cost more than they save (doc/discretization.md, §16).
+    check_growth(make, 28);
   }
 }
 
