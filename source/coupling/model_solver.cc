@@ -1,3 +1,5 @@
+#include <deal.II/base/timer.h>
+
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
@@ -10,15 +12,35 @@ namespace ltn
 {
   namespace
   {
+    /** Adds the wall time of its lifetime to @p seconds. */
+    class ScopedTime
+    {
+    public:
+      explicit ScopedTime(double &seconds)
+        : seconds(seconds)
+      {}
+
+      ~ScopedTime()
+      {
+        seconds += timer.wall_time();
+      }
+
+    private:
+      double &seconds;
+      Timer   timer;
+    };
+
     /** The free block `S_FF = Z S Z` of a Schur complement, for CG. */
     struct FreeBlock
     {
       const SchurComplement &system;
+      double                &seconds;
 
       void
       vmult(TrilinosWrappers::MPI::Vector       &dst,
             const TrilinosWrappers::MPI::Vector &src) const
       {
+        const ScopedTime time(seconds);
         system.vmult_free_block(dst, src);
       }
     };
@@ -32,11 +54,13 @@ namespace ltn
     {
       const ModelPreconditioner &preconditioner;
       const SchurComplement     &system;
+      double                    &seconds;
 
       void
       vmult(TrilinosWrappers::MPI::Vector       &dst,
             const TrilinosWrappers::MPI::Vector &src) const
       {
+        const ScopedTime time(seconds);
         preconditioner.vmult(dst, src);
         system.restrict_to_free_block(dst);
       }
@@ -96,6 +120,7 @@ namespace ltn
                      WarmStart                           *last) const
   {
     ++counts.solves;
+    const ScopedTime time(counts.seconds);
     if (direct)
       {
         if (transpose)
@@ -185,20 +210,24 @@ namespace ltn
     if (rhs_norm > 0 && use_cg)
       {
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-        cg.solve(FreeBlock{block},
+        cg.solve(FreeBlock{block, counts.operator_seconds},
                  x,
                  rhs,
-                 FreeBlockPreconditioner{*preconditioner, block});
+                 FreeBlockPreconditioner{*preconditioner,
+                                         block,
+                                         counts.preconditioner_seconds});
       }
     else if (rhs_norm > 0)
       {
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
           control,
           SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(50, true));
-        gmres.solve(FreeBlock{block},
+        gmres.solve(FreeBlock{block, counts.operator_seconds},
                     x,
                     rhs,
-                    FreeBlockPreconditioner{*preconditioner, block});
+                    FreeBlockPreconditioner{*preconditioner,
+                                            block,
+                                            counts.preconditioner_seconds});
       }
     else
       x = 0.; // S_FF is nonsingular
@@ -257,6 +286,7 @@ namespace ltn
     for (const auto &theta : thetas)
       rhs.push_back(extend_controls(theta));
     counts.solves += thetas.size();
+    const ScopedTime time(counts.seconds);
     direct->solve(fields, rhs, false);
     return fields;
   }

@@ -58,12 +58,26 @@ namespace ltn
     if (two_level)
       inner.relative_tolerance =
         std::min(inner.relative_tolerance, 1e-2 * relative_tolerance);
-    Timer        solver_setup;
-    ModelSolver  nonlocal_solver(*system.models[nonlocal_model], true, inner);
-    ModelSolver  local_solver(*system.models[local_model], true, inner.local());
-    const double solver_setup_seconds = solver_setup.wall_time();
+    CouplingSolution solution;
+    Timer            phase_timer;
+    ModelSolver nonlocal_solver(*system.models[nonlocal_model], true, inner);
+    ModelSolver local_solver(*system.models[local_model], true, inner.local());
     const ReducedHessian<dim> hessian(system,
                                       {{&nonlocal_solver, &local_solver}});
+    // Each phase's wall time and the model solves in it, for the summary.
+    std::array<ModelSolverStatistics, 2> phase_start;
+    const auto end_phase = [&](const std::string &name) {
+      CouplingSolution::Phase phase{name, phase_timer.wall_time(), {}};
+      for (const unsigned int k : {0u, 1u})
+        {
+          const ModelSolverStatistics now = hessian.solvers[k]->statistics();
+          phase.model_solvers[k]          = now.since(phase_start[k]);
+          phase_start[k]                  = now;
+        }
+      solution.phases.push_back(phase);
+      phase_timer.restart();
+    };
+    end_phase("model solver setup");
 
     // The right-hand side is b = -V^T B^T W d, d the mismatch of the
     // models' states without controls. The CG forms its start's residual
@@ -79,8 +93,8 @@ namespace ltn
     const double rhs_norm = hessian.reduced_gradient(data).l2_norm();
     for (const ModelSolver *solver : hessian.solvers)
       solver->set_relative_tolerance(inner.relative_tolerance);
+    end_phase("right-hand side");
 
-    CouplingSolution solution;
     if (rhs_norm > 0)
       {
         SolverControl control(max_iterations, relative_tolerance * rhs_norm);
@@ -122,7 +136,6 @@ namespace ltn
           }};
         try
           {
-            Timer                                             setup_timer;
             std::unique_ptr<const ControlPreconditioner<dim>> preconditioner;
             if (controls.enabled)
               preconditioner =
@@ -158,7 +171,9 @@ namespace ltn
               std::min(inner.relative_tolerance, local_coarse_state_tolerance));
             const DeflationSpace coarse(std::move(Z), equations);
             local.set_relative_tolerance(inner.relative_tolerance);
-            solution.preconditioner_setup_seconds = setup_timer.wall_time();
+            end_phase("coarse space");
+            solution.preconditioner_setup_seconds =
+              solution.phases.back().seconds;
             if (preconditioner)
               solution.explicit_controls =
                 preconditioner->n_explicit_controls();
@@ -176,6 +191,7 @@ namespace ltn
               theta,
               control,
               relax);
+            end_phase("iterations");
           }
         catch (const SolverControl::NoConvergence &)
           {
@@ -190,12 +206,12 @@ namespace ltn
         solution.iterations = control.last_step();
         solution.residual   = control.last_value() / rhs_norm;
       }
-    Timer final_solves;
     solution.fields[nonlocal_model] =
       nonlocal_solver.forward(theta.block(0), true);
     solution.fields[local_model] = local_solver.forward(theta.block(1), true);
+    end_phase("final solves");
     solution.standalone_seconds =
-      solver_setup_seconds + final_solves.wall_time();
+      solution.phases.front().seconds + solution.phases.back().seconds;
     solution.model_solvers = {
       {nonlocal_solver.statistics(), local_solver.statistics()}};
     return solution;

@@ -63,6 +63,25 @@ namespace ltn
         j["solver"]["standalone model solves seconds"] =
           level.standalone_seconds;
       const char *names[2] = {"nonlocal", "local"};
+      if (!level.solve_phases.empty())
+        {
+          JsonValue phases = JsonValue::array();
+          for (const auto &phase : level.solve_phases)
+            {
+              JsonValue entry  = JsonValue::object();
+              entry["name"]    = phase.name;
+              entry["seconds"] = phase.seconds;
+              for (const unsigned int k : {0u, 1u})
+                {
+                  JsonValue &model    = entry[names[k]];
+                  model["solves"]     = phase.solves[k];
+                  model["iterations"] = phase.iterations[k];
+                  model["seconds"]    = phase.solve_seconds[k];
+                }
+              phases.push_back(entry);
+            }
+          j["solver"]["phases"] = phases;
+        }
       for (const unsigned int k : {0u, 1u})
         if (level.model_solves[k] > 0)
           {
@@ -72,6 +91,10 @@ namespace ltn
             model["iterations per solve"] =
               static_cast<double>(level.model_iterations[k]) /
               level.model_solves[k];
+            model["seconds"]          = level.model_seconds[k];
+            model["operator seconds"] = level.model_operator_seconds[k];
+            model["preconditioner seconds"] =
+              level.model_preconditioner_seconds[k];
           }
       JsonValue &memory              = j["memory"];
       memory["nonlocal model bytes"] = level.model_bytes[0];

@@ -42,6 +42,33 @@ namespace
     return worst;
   }
 
+  /**
+   * The reduced-space CG's phases account for every model solve: their
+   * solves and iterations sum to the model solvers' totals, level by level.
+   */
+  void
+  check_phases(const SceneRun &run)
+  {
+    for (const auto &level : run.summary.levels)
+      {
+        if (level.solve_phases.empty())
+          continue;
+        CHECK(level.solve_phases.front().name == "model solver setup");
+        CHECK(level.solve_phases.back().name == "final solves");
+        for (const unsigned int k : {0u, 1u})
+          {
+            unsigned int solves = 0, iterations = 0;
+            for (const auto &phase : level.solve_phases)
+              {
+                solves += phase.solves[k];
+                iterations += phase.iterations[k];
+              }
+            CHECK(solves == level.model_solves[k]);
+            CHECK(iterations == level.model_iterations[k]);
+          }
+      }
+  }
+
   void
   check_scene(const std::string              &scene,
               const std::vector<std::string> &common = {})
@@ -61,6 +88,7 @@ namespace
                    << ", outer iterations "
                    << other.summary.levels.back().iterations);
         CHECK(d < 1e-8);
+        check_phases(other);
       }
   }
 } // namespace

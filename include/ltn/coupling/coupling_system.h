@@ -11,6 +11,7 @@
 
 #include <array>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace ltn
@@ -134,6 +135,14 @@ namespace ltn
   /** A solution of the optimality system, with the solver's statistics. */
   struct CouplingSolution
   {
+    /** One phase of a solve: its wall time, each model's solves in it. */
+    struct Phase
+    {
+      std::string                          name;
+      double                               seconds = 0;
+      std::array<ModelSolverStatistics, 2> model_solvers;
+    };
+
     /** Each model's field on its owned degrees of freedom. */
     std::array<TrilinosWrappers::MPI::Vector, 2> fields;
     unsigned int                                 iterations = 0;
@@ -161,5 +170,7 @@ namespace ltn
     double standalone_seconds = 0;
     /** Per model: its own solver's solves, iterations and memory. */
     std::array<ModelSolverStatistics, 2> model_solvers;
+    /** The phases of the solve, in order (the reduced-space CG's). */
+    std::vector<Phase> phases;
   };
 } // namespace ltn

@@ -56,13 +56,34 @@ namespace ltn
     }
   };
 
-  /** How often a model's solver ran and how many iterations it took. */
+  /**
+   * How often a model's solver ran, how many iterations it took, and the
+   * wall time (this rank's) of its solves, of which the iterative solver
+   * spent some in products with the operator and some in its
+   * preconditioner (the rest: vector operations, the Schur complement's
+   * reduction and recovery, warm starts).
+   */
   struct ModelSolverStatistics
   {
-    unsigned int solves     = 0;
-    unsigned int iterations = 0;
+    unsigned int solves                 = 0;
+    unsigned int iterations             = 0;
+    double       seconds                = 0;
+    double       operator_seconds       = 0;
+    double       preconditioner_seconds = 0;
     /** Bytes of this rank's factorization or preconditioners (estimated). */
     std::size_t memory = 0;
+
+    /** The solves, iterations and times since @p earlier (memory: now). */
+    ModelSolverStatistics
+    since(const ModelSolverStatistics &earlier) const
+    {
+      return {solves - earlier.solves,
+              iterations - earlier.iterations,
+              seconds - earlier.seconds,
+              operator_seconds - earlier.operator_seconds,
+              preconditioner_seconds - earlier.preconditioner_seconds,
+              memory};
+    }
   };
 
   /**

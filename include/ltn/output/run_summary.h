@@ -36,9 +36,27 @@ namespace ltn
     double       preconditioner_setup_seconds = 0;
     /** CouplingSolution::standalone_seconds. */
     double standalone_seconds = 0;
-    /** Per model (nonlocal, local): its own solver's solves, iterations. */
-    std::array<unsigned int, 2> model_solves     = {{0, 0}};
-    std::array<unsigned int, 2> model_iterations = {{0, 0}};
+    /**
+     * Per model (nonlocal, local): its own solver's solves, iterations,
+     * and wall time (rank 0's) in all, in operator products and in the
+     * preconditioner (ModelSolverStatistics).
+     */
+    std::array<unsigned int, 2> model_solves                 = {{0, 0}};
+    std::array<unsigned int, 2> model_iterations             = {{0, 0}};
+    std::array<double, 2>       model_seconds                = {{0, 0}};
+    std::array<double, 2>       model_operator_seconds       = {{0, 0}};
+    std::array<double, 2>       model_preconditioner_seconds = {{0, 0}};
+    /** A phase of the coupled solve and the model solves in it. */
+    struct SolvePhase
+    {
+      std::string                 name;
+      double                      seconds       = 0;
+      std::array<unsigned int, 2> solves        = {{0, 0}};
+      std::array<unsigned int, 2> iterations    = {{0, 0}};
+      std::array<double, 2>       solve_seconds = {{0, 0}};
+    };
+    /** The coupled solve's phases (reduced-space CG), in order. */
+    std::vector<SolvePhase> solve_phases;
     /**
      * Per model, bytes over all ranks for its operator, right-hand side and
      * solver (preconditioners; direct factorizations are not counted).
