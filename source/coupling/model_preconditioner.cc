@@ -4,12 +4,33 @@
 
 namespace ltn
 {
-  ModelPreconditioner::ModelPreconditioner(const DiscreteModel &model)
+  ModelPreconditioner::ModelPreconditioner(
+    const DiscreteModel             &model,
+    const std::vector<unsigned int> &subset)
     : on_surrogate(model.surrogate.m() > 0)
     , node_dofs(model.node_dofs)
     , surrogate_components(model.surrogate_components)
     , nodes(model.surrogate_nodes)
+    , subset(subset)
   {
+    if (on_surrogate)
+      {
+        std::vector<unsigned int> entry_of_position(
+          model.owned.n_elements(), numbers::invalid_unsigned_int);
+        for (unsigned int e = 0; e < subset.size(); ++e)
+          entry_of_position[subset[e]] = e;
+        subset_entry.resize(surrogate_components * nodes.size());
+        for (unsigned int c = 0; c < surrogate_components; ++c)
+          for (std::size_t i = 0; i < nodes.size(); ++i)
+            subset_entry[c * nodes.size() + i] =
+              entry_of_position[node_dofs * nodes[i] + c];
+      }
+    else if (!subset.empty())
+      {
+        full_src = model.new_vector();
+        full_dst = model.new_vector();
+      }
+
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
     data.higher_order_elements = false;
@@ -119,12 +140,50 @@ namespace ltn
 
 
 
+  void
+  ModelPreconditioner::vmult_subset(
+    TrilinosWrappers::MPI::Vector       &dst,
+    const TrilinosWrappers::MPI::Vector &src) const
+  {
+    if (!on_surrogate)
+      {
+        std::fill(full_src.begin(), full_src.end(), 0.);
+        for (std::size_t e = 0; e < subset.size(); ++e)
+          full_src.begin()[subset[e]] = src.begin()[e];
+        amg.vmult(full_dst, full_src);
+        for (std::size_t e = 0; e < subset.size(); ++e)
+          dst.begin()[e] = full_dst.begin()[subset[e]];
+        return;
+      }
+    // The identity where the surrogate leaves a degree of freedom out, as
+    // in vmult().
+    std::copy(src.begin(), src.end(), dst.begin());
+    const std::size_t n = nodes.size();
+    for (unsigned int c = 0; c < surrogate_components; ++c)
+      {
+        const unsigned int *entry = &subset_entry[c * n];
+        for (std::size_t i = 0; i < n; ++i)
+          node_src.begin()[i] = entry[i] == numbers::invalid_unsigned_int ?
+                                  0. :
+                                  src.begin()[entry[i]];
+        amg.vmult(node_dst, node_src);
+        for (std::size_t i = 0; i < n; ++i)
+          if (entry[i] != numbers::invalid_unsigned_int)
+            dst.begin()[entry[i]] =
+              node_dst.begin()[i] + short_wave_scaling[i] * node_src.begin()[i];
+      }
+  }
+
+
+
   std::size_t
   ModelPreconditioner::memory_consumption() const
   {
     return amg.memory_consumption() + amg_matrix.memory_consumption() +
            (stencil ? stencil->memory_consumption() : 0) +
            node_src.memory_consumption() + node_dst.memory_consumption() +
-           nodes.size() * (sizeof(unsigned int) + sizeof(double));
+           nodes.size() * (sizeof(unsigned int) + sizeof(double)) +
+           (subset.size() + subset_entry.size()) * sizeof(unsigned int) +
+           full_src.memory_consumption() + full_dst.memory_consumption();
   }
 } // namespace ltn

@@ -30,41 +30,31 @@ namespace ltn
       Timer   timer;
     };
 
-    /** The free block `S_FF = Z S Z` of a Schur complement, for CG. */
-    struct FreeBlock
-    {
-      const SchurComplement &system;
-      double                &seconds;
-
-      void
-      vmult(TrilinosWrappers::MPI::Vector       &dst,
-            const TrilinosWrappers::MPI::Vector &src) const
-      {
-        const ScopedTime time(seconds);
-        system.vmult_free_block(dst, src);
-      }
-    };
-
     /**
-     * `Z P Z`, the model's preconditioner on the free block: symmetric
-     * positive definite there when `P` is (CG's vectors lie in the range of
-     * `Z`).
+     * A linear operator for deal.II's solvers: @p apply(dst, src), its wall
+     * time added to @p seconds.
      */
-    struct FreeBlockPreconditioner
+    template <typename Apply>
+    struct TimedOperator
     {
-      const ModelPreconditioner &preconditioner;
-      const SchurComplement     &system;
-      double                    &seconds;
+      Apply   apply;
+      double &seconds;
 
       void
       vmult(TrilinosWrappers::MPI::Vector       &dst,
             const TrilinosWrappers::MPI::Vector &src) const
       {
         const ScopedTime time(seconds);
-        preconditioner.vmult(dst, src);
-        system.restrict_to_free_block(dst);
+        apply(dst, src);
       }
     };
+
+    template <typename Apply>
+    TimedOperator<Apply>
+    timed(double &seconds, Apply apply)
+    {
+      return {apply, seconds};
+    }
   } // namespace
 
 
@@ -85,9 +75,12 @@ namespace ltn
       control_partition.is_empty() ? 0 : control_partition.nth_index_in_set(0);
     if (settings.iterative)
       {
-        preconditioner = std::make_unique<ModelPreconditioner>(model);
         forward_system = std::make_unique<SchurComplement>(model, false);
-        counts.memory  = preconditioner->memory_consumption() +
+        preconditioner = std::make_unique<ModelPreconditioner>(
+          model,
+          use_cg ? forward_system->free_positions() :
+                   std::vector<unsigned int>());
+        counts.memory = preconditioner->memory_consumption() +
                         forward_system->memory_consumption();
         if (with_adjoint)
           {
@@ -209,25 +202,43 @@ namespace ltn
     control.set_tolerance(tolerance * rhs_norm);
     if (rhs_norm > 0 && use_cg)
       {
+        // On the free block's own entries: CG's vector updates and inner
+        // products then pass over them alone.
+        TrilinosWrappers::MPI::Vector x_free   = block.new_free_vector();
+        TrilinosWrappers::MPI::Vector rhs_free = block.new_free_vector();
+        block.extract_free(x_free, x);
+        block.extract_free(rhs_free, rhs);
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-        cg.solve(FreeBlock{block, counts.operator_seconds},
-                 x,
-                 rhs,
-                 FreeBlockPreconditioner{*preconditioner,
-                                         block,
-                                         counts.preconditioner_seconds});
+        // S_FF, and Z P Z^T, on vectors of the free block's entries.
+        cg.solve(timed(counts.operator_seconds,
+                       [&](auto &dst, const auto &src) {
+                         block.vmult_free_vector(dst, src);
+                       }),
+                 x_free,
+                 rhs_free,
+                 timed(counts.preconditioner_seconds,
+                       [&](auto &dst, const auto &src) {
+                         preconditioner->vmult_subset(dst, src);
+                       }));
+        block.insert_free(x, x_free);
       }
     else if (rhs_norm > 0)
       {
         SolverGMRES<TrilinosWrappers::MPI::Vector> gmres(
           control,
           SolverGMRES<TrilinosWrappers::MPI::Vector>::AdditionalData(50, true));
-        gmres.solve(FreeBlock{block, counts.operator_seconds},
+        // S_FF = Z S Z, and Z P Z, on vectors of all the model's entries.
+        gmres.solve(timed(counts.operator_seconds,
+                          [&](auto &dst, const auto &src) {
+                            block.vmult_free_block(dst, src);
+                          }),
                     x,
                     rhs,
-                    FreeBlockPreconditioner{*preconditioner,
-                                            block,
-                                            counts.preconditioner_seconds});
+                    timed(counts.preconditioner_seconds,
+                          [&](auto &dst, const auto &src) {
+                            preconditioner->vmult(dst, src);
+                            block.restrict_to_free_block(dst);
+                          }));
       }
     else
       x = 0.; // S_FF is nonsingular

@@ -1,4 +1,7 @@
+#include <ltn/base/partition.h>
 #include <ltn/coupling/schur_complement.h>
+
+#include <algorithm>
 
 namespace ltn
 {
@@ -14,8 +17,12 @@ namespace ltn
     free       = model.new_vector();
     for (const auto i : model.owned)
       if (model.role(i) == DofRole::free && !model.eliminated.is_element(i))
-        free(i) = 1.;
+        {
+          free(i) = 1.;
+          free_list.push_back(model.owned.index_within_set(i));
+        }
     free.compress(VectorOperation::insert);
+    free_partition = contiguous_partition(free_list.size(), model.communicator);
     if (!eliminates)
       return;
     kept             = model.new_vector();
@@ -65,6 +72,68 @@ namespace ltn
     TrilinosWrappers::MPI::Vector &v) const
   {
     v.scale(free);
+  }
+
+
+
+  TrilinosWrappers::MPI::Vector
+  SchurComplement::new_free_vector() const
+  {
+    return TrilinosWrappers::MPI::Vector(free_partition, model.communicator);
+  }
+
+
+
+  const std::vector<unsigned int> &
+  SchurComplement::free_positions() const
+  {
+    return free_list;
+  }
+
+
+
+  void
+  SchurComplement::extract_free(TrilinosWrappers::MPI::Vector       &free_part,
+                                const TrilinosWrappers::MPI::Vector &v) const
+  {
+    for (std::size_t i = 0; i < free_list.size(); ++i)
+      free_part.begin()[i] = v.begin()[free_list[i]];
+  }
+
+
+
+  void
+  SchurComplement::insert_free(
+    TrilinosWrappers::MPI::Vector       &v,
+    const TrilinosWrappers::MPI::Vector &free_part) const
+  {
+    std::fill(v.begin(), v.end(), 0.);
+    for (std::size_t i = 0; i < free_list.size(); ++i)
+      v.begin()[free_list[i]] = free_part.begin()[i];
+  }
+
+
+
+  void
+  SchurComplement::vmult_free_vector(
+    TrilinosWrappers::MPI::Vector       &dst,
+    const TrilinosWrappers::MPI::Vector &src) const
+  {
+    insert_free(v, src);
+    // The product's rows at the free degrees of freedom, into w: the
+    // kept rows' pass writes them after the eliminated rows' values are
+    // used.
+    if (!eliminates)
+      model.vmult_rows(w, v, transpose, RowSubset::all);
+    else
+      {
+        model.vmult_rows(w, v, transpose, RowSubset::eliminated);
+        const std::size_t n = v.locally_owned_size();
+        for (std::size_t i = 0; i < n; ++i)
+          v.begin()[i] -= inverse_diagonal.begin()[i] * w.begin()[i];
+        model.vmult_rows(w, v, transpose, RowSubset::kept);
+      }
+    extract_free(dst, w);
   }
 
 
@@ -136,6 +205,7 @@ namespace ltn
   std::size_t
   SchurComplement::memory_consumption() const
   {
-    return (eliminates ? 5 : 3) * free.memory_consumption();
+    return (eliminates ? 5 : 3) * free.memory_consumption() +
+           free_list.size() * sizeof(unsigned int);
   }
 } // namespace ltn

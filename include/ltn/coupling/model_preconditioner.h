@@ -25,11 +25,25 @@ namespace ltn
   class ModelPreconditioner
   {
   public:
-    explicit ModelPreconditioner(const DiscreteModel &model);
+    /**
+     * With @p subset (owned positions, ascending: SchurComplement's free
+     * degrees of freedom), vmult_subset() works on vectors of those entries
+     * only.
+     */
+    explicit ModelPreconditioner(const DiscreteModel             &model,
+                                 const std::vector<unsigned int> &subset = {});
 
     void
     vmult(TrilinosWrappers::MPI::Vector       &dst,
           const TrilinosWrappers::MPI::Vector &src) const;
+
+    /**
+     * `Z P Z^T` on vectors of the subset's entries (entry `i` the model's
+     * owned entry `subset[i]`), `Z` the restriction to them.
+     */
+    void
+    vmult_subset(TrilinosWrappers::MPI::Vector       &dst,
+                 const TrilinosWrappers::MPI::Vector &src) const;
 
     /** Bytes this rank holds for the multigrid hierarchy (estimated). */
     std::size_t
@@ -57,5 +71,15 @@ namespace ltn
     mutable TrilinosWrappers::MPI::Vector node_src, node_dst;
     /** `short_wave_weight` over the surrogate's diagonal, per owned row. */
     std::vector<double> short_wave_scaling;
+    /** The subset of the constructor. */
+    std::vector<unsigned int> subset;
+    /**
+     * On the surrogate: per component `c` and node `i`, at `c n + i`, the
+     * entry of a subset's vector the node's component is, or
+     * `numbers::invalid_unsigned_int` if it is outside the subset.
+     */
+    std::vector<unsigned int> subset_entry;
+    /** On the model's matrix: vectors of all its entries, to apply `amg`. */
+    mutable TrilinosWrappers::MPI::Vector full_src, full_dst;
   };
 } // namespace ltn
