@@ -176,9 +176,16 @@ namespace ltn
     // The u-rows of M [0; D^-1 b_t]: B D^-1 b_t.
     v = b;
     v.scale(inverse_diagonal);
-    model.vmult_rows(w, v, transpose, RowSubset::kept);
     TrilinosWrappers::MPI::Vector g = b;
-    g -= w;
+    // The coupled solves' right-hand sides, loads and the mismatch's
+    // gradient, are zero at the eliminated rows (the dilatations' equations
+    // have no source): the product, a pass over all kept rows, is then
+    // zero, and skipped.
+    if (v.linfty_norm() > 0)
+      {
+        model.vmult_rows(w, v, transpose, RowSubset::kept);
+        g -= w;
+      }
     g.scale(kept);
     return g;
   }
