@@ -7,9 +7,12 @@ For each scene, runs a sequence of resolutions (the particle spacing halves,
 the horizon stays two spacings) with every solver of the coupled problem and
 with LPS on the whole body ("all peridynamic", `Geometry/Models = nonlocal
 only`) at the same spacing. The error is that of the maximum crack opening,
-relative to a reference: the Richardson extrapolation of the all-peridynamic
-openings of the three resolutions with the first all-peridynamic solver listed
-(their observed order is printed and written to the CSV). Writes results.csv (one row per run) and
+relative to a reference: the Richardson extrapolation of the openings of
+the three finest resolutions of the all-peridynamic solver with the most
+resolutions (the fastest of those at its finest; the observed order is
+printed and written to the CSV). For each coupled run it prints the time the
+all-peridynamic solve would take at the same error, along the line through
+its two finest points. Writes results.csv (one row per run) and
 error_vs_time.png (error against wall time of the whole run, one curve per
 solver, one panel per scene).
 """
@@ -84,19 +87,22 @@ scenes = {
                     "Nonlocal model/Horizon to mesh size ratio=%g" % (2 * r)]
                    # Spacing 1/8 leaves the collar (two horizons deep) no
                    # room inside the bar.
-                   for r in (0.5, 0.25, 0.125)],
+                   for r in (0.5, 0.25, 0.125, 0.0625)],
         "runs": {
             "all peridynamic, gmres matrix-free":
                 (all_peridynamic + scalable, [0, 1, 2]),
+            # Spacing 1/128 (7.2 million particles with the collar, 6.9 GB
+            # on one rank) for the CG curves only.
             "all peridynamic, cg matrix-free":
-                (all_peridynamic + scalable_cg, [0, 1, 2]),
+                (all_peridynamic + scalable_cg, [0, 1, 2, 3]),
             # The 3D LU of the finest level's LPS matrix fills in.
             "coupled, reduced space cg, direct":
                 (["Coupling/Method=reduced space cg"] + direct, [0, 1]),
             "coupled, reduced space cg, gmres matrix-free":
                 (["Coupling/Method=reduced space cg"] + scalable, [0, 1, 2]),
             "coupled, reduced space cg, cg matrix-free":
-                (["Coupling/Method=reduced space cg"] + scalable_cg, [0, 1, 2]),
+                (["Coupling/Method=reduced space cg"] + scalable_cg,
+                 [0, 1, 2, 3]),
             "coupled, full space gmres, matrix-free":
                 (full_space_gmres, [0, 1]),
         },
@@ -143,12 +149,40 @@ for scene in options.scenes:
             print(scene, name, level, summary["timings"]["total"],
                   summary["mechanics"]["crack_openings"][0]["max_opening"],
                   flush=True)
-    reference_runs = [name for name in scenes[scene]["runs"]
-                      if name.startswith("all peridynamic")]
-    openings = [results[(reference_runs[0], level)]["mechanics"]
-                ["crack_openings"][0]["max_opening"] for level in (0, 1, 2)]
+    # The reference: the all-peridynamic run with the most levels (the
+    # fastest at its finest level of those), from its three finest.
+    def reach(name):
+        levels = scenes[scene]["runs"][name][1]
+        return (len(levels),
+                -results[(name, levels[-1])]["timings"]["total"])
+
+    reference_run = max((name for name in scenes[scene]["runs"]
+                         if name.startswith("all peridynamic")), key=reach)
+    reference_levels = scenes[scene]["runs"][reference_run][1][-3:]
+    openings = [results[(reference_run, level)]["mechanics"]
+                ["crack_openings"][0]["max_opening"]
+                for level in reference_levels]
     reference, order = extrapolate(openings)
-    print(scene, "reference opening", reference, "observed order", order)
+    print(scene, "reference opening", reference, "observed order", order,
+          "from", reference_run, "at levels", reference_levels)
+
+    def error(summary):
+        opening = summary["mechanics"]["crack_openings"][0]["max_opening"]
+        return abs(opening / reference - 1)
+
+    # The all-peridynamic time at a coupled run's error: along the log-log
+    # line through the reference run's two finest points.
+    (t1, e1), (t2, e2) = [(results[(reference_run, level)]["timings"]
+                           ["total"], error(results[(reference_run, level)]))
+                          for level in reference_levels[-2:]]
+    slope = math.log(e2 / e1) / math.log(t2 / t1)
+    for (name, level), summary in results.items():
+        if name.startswith("coupled"):
+            t = summary["timings"]["total"]
+            t_all = t2 * (error(summary) / e2) ** (1 / slope)
+            print(scene, name, level, "error %.3g in %.3g s;" % (
+                error(summary), t), "all peridynamic at that error "
+                "%.3g s (error ~ t^%.2f): %.2fx" % (t_all, slope, t_all / t))
     for (name, level), summary in results.items():
         opening = summary["mechanics"]["crack_openings"][0]["max_opening"]
         solver = summary["solver"]
@@ -165,7 +199,7 @@ for scene in options.scenes:
             "max_opening": "%.7g" % opening,
             "reference_opening": "%.7g" % reference,
             "observed_order": "%.2f" % order,
-            "error": "%.3g" % abs(opening / reference - 1),
+            "error": "%.3g" % error(summary),
         })
 
 with open(options.csv, "w", newline="") as f:
