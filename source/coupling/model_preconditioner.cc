@@ -25,11 +25,11 @@ namespace ltn
             subset_entry[c * nodes.size() + i] =
               entry_of_position[node_dofs * nodes[i] + c];
       }
-    else if (!subset.empty())
-      {
-        full_src = model.new_vector();
-        full_dst = model.new_vector();
-      }
+    // Only the particle models' free blocks are symmetric, so only their CG
+    // asks for a subset, and they all have a surrogate.
+    AssertThrow(on_surrogate || subset.empty(),
+                ExcMessage("a preconditioner on a subset of the entries "
+                           "needs the model's lattice surrogate"));
 
     TrilinosWrappers::PreconditionAMG::AdditionalData data;
     data.elliptic              = true;
@@ -145,16 +145,6 @@ namespace ltn
     TrilinosWrappers::MPI::Vector       &dst,
     const TrilinosWrappers::MPI::Vector &src) const
   {
-    if (!on_surrogate)
-      {
-        std::fill(full_src.begin(), full_src.end(), 0.);
-        for (std::size_t e = 0; e < subset.size(); ++e)
-          full_src.begin()[subset[e]] = src.begin()[e];
-        amg.vmult(full_dst, full_src);
-        for (std::size_t e = 0; e < subset.size(); ++e)
-          dst.begin()[e] = full_dst.begin()[subset[e]];
-        return;
-      }
     // The identity where the surrogate leaves a degree of freedom out, as
     // in vmult().
     std::copy(src.begin(), src.end(), dst.begin());
@@ -183,7 +173,6 @@ namespace ltn
            (stencil ? stencil->memory_consumption() : 0) +
            node_src.memory_consumption() + node_dst.memory_consumption() +
            nodes.size() * (sizeof(unsigned int) + sizeof(double)) +
-           (subset.size() + subset_entry.size()) * sizeof(unsigned int) +
-           full_src.memory_consumption() + full_dst.memory_consumption();
+           (subset.size() + subset_entry.size()) * sizeof(unsigned int);
   }
 } // namespace ltn

@@ -28,7 +28,7 @@ namespace ltn
     /**
      * With @p subset (owned positions, ascending: SchurComplement's free
      * degrees of freedom), vmult_subset() works on vectors of those entries
-     * only.
+     * only; a subset needs the model's lattice surrogate.
      */
     explicit ModelPreconditioner(const DiscreteModel             &model,
                                  const std::vector<unsigned int> &subset = {});
@@ -79,7 +79,5 @@ namespace ltn
      * `numbers::invalid_unsigned_int` if it is outside the subset.
      */
     std::vector<unsigned int> subset_entry;
-    /** On the model's matrix: vectors of all its entries, to apply `amg`. */
-    mutable TrilinosWrappers::MPI::Vector full_src, full_dst;
   };
 } // namespace ltn
