@@ -574,14 +574,22 @@ namespace ltn
 
 
   template <int dim>
-  template <int n_c, int a0, int a1, typename Values>
+  template <int n_c, int a0, int a1>
   void
-  LatticeOperator<dim>::apply_scaled_rows(const Values &value,
-                                          const bool    transpose,
-                                          double       *y) const
+  LatticeOperator<dim>::apply_scaled_rows(
+    const std::array<const double *, 3> &x,
+    const std::array<std::int64_t, 3>   &x_first,
+    const bool                           transpose,
+    double                              *y) const
   {
     const unsigned int     n_offsets  = offsets.size();
     constexpr unsigned int block_size = n_c * n_c;
+    // The values of particle i, for a row or column of @p segment.
+    const auto values_in = [&](const std::size_t segment) {
+      const unsigned int source = segment_source[segment];
+      return [values = x[source], start = x_first[source]](
+               const std::int64_t i) { return values + (i - start) * n_c; };
+    };
     if (!transpose)
       {
         // Row a of particle i, a0 <= a < a1: C_i x_i, then over its intact
@@ -592,6 +600,7 @@ namespace ltn
             const unsigned int used = scaled[s].rows & subset;
             if (used == 0)
               continue;
+            const auto         value  = values_in(segment);
             const std::int64_t i      = scaled[s].number;
             const double      *xi     = value(i);
             const double      *centre = &scaled_centres[s * block_size];
@@ -635,6 +644,7 @@ namespace ltn
     // bond -o_k back to j, q_i O^T x_i plus q_j P^T x_i.
     for (const auto &[j, segment] : touched)
       {
+        const auto              value = values_in(segment);
         std::array<double, n_c> own{}, partner{};
         if (const int s = scaled_index[j - reach_first];
             s >= 0 && scaled[s].rows != 0)
@@ -954,12 +964,6 @@ namespace ltn
                       else
                         apply_stencil<n, false, r0, r1>(x, x_first, y);
                     });
-    const auto value = [&](const std::int64_t j) {
-      if (j >= std::int64_t(first) && j < std::int64_t(end))
-        return x[0] + (j - std::int64_t(first)) * n_components;
-      const unsigned int range = j < edge_ranges[0].second ? 0 : 1;
-      return x[1 + range] + (j - edge_ranges[range].first) * n_components;
-    };
     if (!scaled_owned.empty() || !touched.empty())
       with_block_size(n_components,
                       n_eliminated_components,
@@ -967,7 +971,8 @@ namespace ltn
                       [&](auto n_c, auto a0, auto a1) {
                         apply_scaled_rows<decltype(n_c)::value,
                                           decltype(a0)::value,
-                                          decltype(a1)::value>(value,
+                                          decltype(a1)::value>(x,
+                                                               x_first,
                                                                transpose,
                                                                y);
                       });

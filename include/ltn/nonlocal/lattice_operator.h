@@ -319,13 +319,15 @@ namespace ltn
     /**
      * Add the scaled rows' part of `M x` at the components `[a0, a1)` of
      * each particle (of `M^T x`: the columns), to the owned values @p y;
-     * @p value gives a particle's values.
+     * @p x and @p x_first as in apply_stencil(): a scaled row and its
+     * partners read where their segment does.
      */
-    template <int n_c, int a0, int a1, typename Values>
+    template <int n_c, int a0, int a1>
     void
-    apply_scaled_rows(const Values &value,
-                      const bool    transpose,
-                      double       *y) const;
+    apply_scaled_rows(const std::array<const double *, 3> &x,
+                      const std::array<std::int64_t, 3>   &x_first,
+                      const bool                           transpose,
+                      double                              *y) const;
   };
 
   /**
