@@ -120,19 +120,7 @@ namespace ltn
     const TrilinosWrappers::MPI::Vector &src) const
   {
     insert_free(v, src);
-    // The product's rows at the free degrees of freedom, into w: the
-    // kept rows' pass writes them after the eliminated rows' values are
-    // used.
-    if (!eliminates)
-      model.vmult_rows(w, v, transpose, RowSubset::all);
-    else
-      {
-        model.vmult_rows(w, v, transpose, RowSubset::eliminated);
-        const std::size_t n = v.locally_owned_size();
-        for (std::size_t i = 0; i < n; ++i)
-          v.begin()[i] -= inverse_diagonal.begin()[i] * w.begin()[i];
-        model.vmult_rows(w, v, transpose, RowSubset::kept);
-      }
+    product_of_work_vector(w);
     extract_free(dst, w);
   }
 
@@ -152,18 +140,29 @@ namespace ltn
     const std::size_t n = v.locally_owned_size();
     for (std::size_t i = 0; i < n; ++i)
       v.begin()[i] = src.begin()[i] * mask.begin()[i];
-    if (!eliminates)
-      model.vmult_rows(dst, v, transpose, RowSubset::all);
-    else
-      {
-        // The t-rows of M [u; 0]: C u; v = [u; -D^-1 C u].
-        model.vmult_rows(w, v, transpose, RowSubset::eliminated);
-        for (std::size_t i = 0; i < n; ++i)
-          v.begin()[i] -= inverse_diagonal.begin()[i] * w.begin()[i];
-        // The u-rows of M v: A u - B D^-1 C u.
-        model.vmult_rows(dst, v, transpose, RowSubset::kept);
-      }
+    product_of_work_vector(dst);
     dst.scale(mask);
+  }
+
+
+
+  void
+  SchurComplement::product_of_work_vector(
+    TrilinosWrappers::MPI::Vector &dst) const
+  {
+    if (!eliminates)
+      {
+        model.vmult_rows(dst, v, transpose, RowSubset::all);
+        return;
+      }
+    // The t-rows of M [u; 0]: C u; v = [u; -D^-1 C u].
+    model.vmult_rows(w, v, transpose, RowSubset::eliminated);
+    const std::size_t n = v.locally_owned_size();
+    for (std::size_t i = 0; i < n; ++i)
+      v.begin()[i] -= inverse_diagonal.begin()[i] * w.begin()[i];
+    // The u-rows of M v: A u - B D^-1 C u (into w too, if dst is w: its
+    // t-rows are used by then).
+    model.vmult_rows(dst, v, transpose, RowSubset::kept);
   }
 
 

@@ -49,8 +49,8 @@ namespace ltn
     restrict_to_free_block(TrilinosWrappers::MPI::Vector &v) const;
 
     /**
-     * The free block on vectors of its own degrees of freedom only (about
-     * 44 % of the model's on the 3D bars of benchmarks/scaling): entry `i`
+     * The free block on vectors of its own degrees of freedom only (44 to
+     * 60 % of the model's on the 3D bars of benchmarks/scaling): entry `i`
      * of such a vector is the model's owned entry `free_positions()[i]`. A
      * Krylov method on the free block then updates and reduces only those.
      */
@@ -95,6 +95,14 @@ namespace ltn
     masked_product(TrilinosWrappers::MPI::Vector       &dst,
                    const TrilinosWrappers::MPI::Vector &src,
                    const TrilinosWrappers::MPI::Vector &mask) const;
+
+    /**
+     * `dst = S v` at the rows `u` (the other entries unspecified), for the
+     * work vector `v` as the caller set it; overwrites `v`, and `w` unless
+     * @p dst is `w`.
+     */
+    void
+    product_of_work_vector(TrilinosWrappers::MPI::Vector &dst) const;
 
     const DiscreteModel &model;
     const bool           transpose;
