@@ -96,6 +96,12 @@ namespace ltn
                 "matrix-free",
                 "`assembled` in 1D (its nonlocal model is a finite element "
                 "weak form, not a particle lattice)");
+    check_input(dim > 1 ||
+                  !coupling_parameters.controls.surrogate_nonlocal_block,
+                "Coupling/Nonlocal control block",
+                "surrogate extension",
+                "`diagonal` in 1D (the surrogate lives on the particle "
+                "lattice of 2D and 3D models)");
     coupling_parameters.check_operator(nonlocal_parameters.matrix_free,
                                        geometry.has_local_model() &&
                                          geometry.has_nonlocal_model());

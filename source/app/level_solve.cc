@@ -46,6 +46,7 @@ namespace ltn
     record.residual                     = solution.residual;
     record.explicit_controls            = solution.explicit_controls;
     record.coarse_modes                 = solution.coarse_modes;
+    record.nonlocal_block_unknowns      = solution.nonlocal_block_unknowns;
     record.preconditioner_setup_seconds = solution.preconditioner_setup_seconds;
     record.standalone_seconds           = solution.standalone_seconds;
     for (const auto &phase : solution.phases)

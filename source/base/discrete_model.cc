@@ -76,7 +76,7 @@ namespace ltn
     const auto bytes = [](const TrilinosWrappers::SparseMatrix &m) {
       return m.m() == 0 ? std::size_t(0) : m.memory_consumption();
     };
-    return bytes(matrix) + bytes(surrogate) +
+    return bytes(matrix) + bytes(surrogate) + bytes(surrogate_collar) +
            (matrix_free ? matrix_free->memory_consumption() : 0) +
            rhs.memory_consumption();
   }

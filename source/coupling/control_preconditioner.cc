@@ -10,7 +10,8 @@ namespace ltn
   ControlPreconditioner<dim>::ControlPreconditioner(
     const ReducedHessian<dim>        &hessian,
     const std::optional<unsigned int> coarse_degree,
-    const bool                        with_local_block)
+    const bool                        with_local_block,
+    const bool                        surrogate_nonlocal_block)
   {
     const ModelSolver &nonlocal = *hessian.solvers[nonlocal_model];
     nonlocal_diagonal           = nonlocal.restrict_to_controls(
@@ -26,6 +27,12 @@ namespace ltn
         (nonlocal_diagonal(i) > 0 ? nonlocal_diagonal(i) : mean_diagonal) +
         hessian.system.alpha;
     nonlocal_diagonal.compress(VectorOperation::insert);
+    if (surrogate_nonlocal_block)
+      nonlocal_block = std::make_unique<const SurrogateHessianBlock>(
+        *hessian.system.models[nonlocal_model],
+        nonlocal,
+        nonlocal_diagonal,
+        hessian.system.observation_diagonal(nonlocal_model));
 
     // H_ll = (P V_l)^T W (P V_l) + alpha I: one forward local solve per
     // local control, u_j = V_l e_j, and its observation turned back into a
@@ -113,10 +120,16 @@ namespace ltn
     BlockVectorType       &dst,
     const BlockVectorType &src) const
   {
-    for (const auto i : dst.block(nonlocal_model).locally_owned_elements())
-      dst.block(nonlocal_model)(i) =
-        src.block(nonlocal_model)(i) / nonlocal_diagonal(i);
-    dst.block(nonlocal_model).compress(VectorOperation::insert);
+    if (nonlocal_block)
+      nonlocal_block->solve(dst.block(nonlocal_model),
+                            src.block(nonlocal_model));
+    else
+      {
+        for (const auto i : dst.block(nonlocal_model).locally_owned_elements())
+          dst.block(nonlocal_model)(i) =
+            src.block(nonlocal_model)(i) / nonlocal_diagonal(i);
+        dst.block(nonlocal_model).compress(VectorOperation::insert);
+      }
 
     if (local_block.m() == 0)
       {
@@ -145,6 +158,13 @@ namespace ltn
   ControlPreconditioner<dim>::n_coarse_modes() const
   {
     return coarse ? coarse->size() : 0;
+  }
+
+  template <int dim>
+  types::global_dof_index
+  ControlPreconditioner<dim>::n_nonlocal_block_unknowns() const
+  {
+    return nonlocal_block ? nonlocal_block->n_saddle_point_unknowns() : 0;
   }
 
   template class ControlPreconditioner<1>;

@@ -68,6 +68,19 @@ namespace ltn
                         "`two level` control preconditioner (3D elasticity: "
                         "12 nonlocal modes at degree 1, 30 at degree 2, and "
                         "in the full-space GMRES as many local ones).");
+      prm.declare_entry(
+        "Nonlocal control block",
+        "diagonal",
+        Patterns::Selection("diagonal|surrogate extension"),
+        "The nonlocal controls' block of the Control preconditioner: "
+        "`diagonal` (each control particle's observation weight; the "
+        "outer iterations then grow with the overlap's width over the "
+        "horizon) or `surrogate extension` (also the field the collar "
+        "drives into the nonlocal region, modelled with the particle "
+        "lattice's nearest-neighbour Laplacian; its sparse saddle-point "
+        "form, about three times the particles, is factorized once and "
+        "costs one pair of triangular solves per application; needs a "
+        "particle model, 2D or 3D).");
       prm.declare_entry("Model solvers",
                         "direct",
                         Patterns::Selection("direct|preconditioned gmres|"
@@ -128,6 +141,13 @@ namespace ltn
         control_preconditioner == "two level" ?
           std::optional<unsigned int>(prm.get_integer("Coarse space degree")) :
           std::nullopt;
+      controls.surrogate_nonlocal_block =
+        prm.get("Nonlocal control block") == "surrogate extension";
+      check_input(control_preconditioner != "none" ||
+                    !controls.surrogate_nonlocal_block,
+                  "Coupling/Nonlocal control block",
+                  prm.get("Nonlocal control block"),
+                  "`diagonal` with Coupling/Control preconditioner = none");
       check_input(control_preconditioner != "none" ||
                     method != "full space gmres",
                   "Coupling/Control preconditioner",
@@ -188,11 +208,8 @@ namespace ltn
       return solve_reduced_space_cg(
         system, relative_tolerance, max_iterations, model_solvers, controls);
     if (method == "full space gmres")
-      return solve_full_space_gmres(system,
-                                    relative_tolerance,
-                                    max_iterations,
-                                    model_solvers,
-                                    controls.coarse_degree);
+      return solve_full_space_gmres(
+        system, relative_tolerance, max_iterations, model_solvers, controls);
     return solve_full_space_direct(system);
   }
 

@@ -11,11 +11,11 @@ namespace ltn
 {
   template <int dim>
   CouplingSolution
-  solve_full_space_gmres(const CouplingSystem<dim>        &system,
-                         const double                      relative_tolerance,
-                         const unsigned int                max_iterations,
-                         const ModelSolverSettings        &model_solvers,
-                         const std::optional<unsigned int> coarse_degree)
+  solve_full_space_gmres(const CouplingSystem<dim> &system,
+                         const double               relative_tolerance,
+                         const unsigned int         max_iterations,
+                         const ModelSolverSettings &model_solvers,
+                         const ControlPreconditionerSettings &settings)
   {
     const ModelSolver nonlocal_solver(*system.models[nonlocal_model],
                                       true,
@@ -32,14 +32,17 @@ namespace ltn
         std::min(model_solvers.relative_tolerance, 1e-12));
     CouplingSolution                 solution;
     Timer                            setup_timer;
-    const ControlPreconditioner<dim> controls(ReducedHessian<dim>(system,
-                                                                  solvers),
-                                              coarse_degree);
+    const ControlPreconditioner<dim> controls(
+      ReducedHessian<dim>(system, solvers),
+      settings.coarse_degree,
+      true,
+      settings.surrogate_nonlocal_block);
     for (const ModelSolver *solver : solvers)
       solver->set_relative_tolerance(model_solvers.relative_tolerance);
     solution.preconditioner_setup_seconds = setup_timer.wall_time();
     solution.explicit_controls            = controls.n_explicit_controls();
     solution.coarse_modes                 = controls.n_coarse_modes();
+    solution.nonlocal_block_unknowns = controls.n_nonlocal_block_unknowns();
 
     const KktOperator<dim>       kkt(system);
     const KktPreconditioner<dim> preconditioner(kkt, solvers, controls);
@@ -82,17 +85,17 @@ namespace ltn
                          double,
                          unsigned int,
                          const ModelSolverSettings &,
-                         std::optional<unsigned int>);
+                         const ControlPreconditionerSettings &);
   template CouplingSolution
   solve_full_space_gmres(const CouplingSystem<2> &,
                          double,
                          unsigned int,
                          const ModelSolverSettings &,
-                         std::optional<unsigned int>);
+                         const ControlPreconditionerSettings &);
   template CouplingSolution
   solve_full_space_gmres(const CouplingSystem<3> &,
                          double,
                          unsigned int,
                          const ModelSolverSettings &,
-                         std::optional<unsigned int>);
+                         const ControlPreconditionerSettings &);
 } // namespace ltn

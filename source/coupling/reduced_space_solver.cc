@@ -138,10 +138,11 @@ namespace ltn
           {
             std::unique_ptr<const ControlPreconditioner<dim>> preconditioner;
             if (controls.enabled)
-              preconditioner =
-                std::make_unique<ControlPreconditioner<dim>>(hessian,
-                                                             std::nullopt,
-                                                             !two_level);
+              preconditioner = std::make_unique<ControlPreconditioner<dim>>(
+                hessian,
+                std::nullopt,
+                !two_level,
+                controls.surrogate_nonlocal_block);
             // Each column kept in its own model's controls only: a full
             // control vector per local column would be mostly the nonlocal
             // controls' zeros (78 x 768k values on the 10^6 bar).
@@ -175,8 +176,12 @@ namespace ltn
             solution.preconditioner_setup_seconds =
               solution.phases.back().seconds;
             if (preconditioner)
-              solution.explicit_controls =
-                preconditioner->n_explicit_controls();
+              {
+                solution.explicit_controls =
+                  preconditioner->n_explicit_controls();
+                solution.nonlocal_block_unknowns =
+                  preconditioner->n_nonlocal_block_unknowns();
+              }
             solution.coarse_modes = coarse.size();
             solve_deflated_cg(
               equations,

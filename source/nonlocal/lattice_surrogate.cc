@@ -13,6 +13,7 @@ namespace ltn
     const unsigned int          n_field_components,
     const double                diagonal,
     const double                long_wave_modulus,
+    const std::vector<double>  &collar_trace,
     const double                spacing,
     const std::function<bool(const Point<dim> &, const Point<dim> &)> &is_cut,
     DiscreteModel                                                     &model)
@@ -22,9 +23,13 @@ namespace ltn
     // Per particle of Omega_n: the surrogate's numbers of its axis
     // neighbours in Omega_n and its diagonal weight (the number of uncut
     // axis bonds, collar neighbours included: their values are fixed).
-    std::vector<types::global_dof_index> neighbours;
-    const auto                           axis_bonds = [&](const auto p) {
+    // Also, where an axis neighbour lies in the collar, the collar's
+    // particles on that axis, layer by layer, with their trace weights.
+    std::vector<types::global_dof_index>                    neighbours;
+    std::vector<std::pair<types::global_dof_index, double>> collar_neighbours;
+    const auto axis_bonds = [&](const auto p) {
       neighbours.clear();
+      collar_neighbours.clear();
       const LatticeIndex index = lattice.index(p);
       unsigned int       bonds = 0;
       for (unsigned int d = 0; d < dim; ++d)
@@ -37,6 +42,19 @@ namespace ltn
             ++bonds;
             if (lattice.inside(q))
               neighbours.push_back(lattice.inside_number(q));
+            else
+              for (unsigned int m = 0; m < collar_trace.size(); ++m)
+                {
+                  LatticeIndex layer = index;
+                  layer[d] += (m + 1) * step;
+                  const auto number = lattice.number(layer);
+                  // The collar is at least as deep as the stencil reaches.
+                  Assert(number != ParticleLattice<dim>::invalid &&
+                           !lattice.inside(layer),
+                         ExcInternalError());
+                  if (!is_cut(lattice.position(index), lattice.position(layer)))
+                    collar_neighbours.emplace_back(number, collar_trace[m]);
+                }
           }
       return bonds;
     };
@@ -76,6 +94,30 @@ namespace ltn
             model.surrogate.set(row, q, -coupling);
         }
     model.surrogate.compress(VectorOperation::insert);
+
+    // C: the same bonds' weights, spread over the collar's layers.
+    DynamicSparsityPattern collar_dsp(rows.size(), lattice.n_particles(), rows);
+    for (const auto p : owned_particles)
+      if (const LatticeIndex index = lattice.index(p); lattice.inside(index))
+        {
+          axis_bonds(p);
+          for (const auto &[q, weight] : collar_neighbours)
+            collar_dsp.add(lattice.inside_number(index), q);
+        }
+    model.surrogate_collar.reinit(rows,
+                                  owned_particles,
+                                  collar_dsp,
+                                  model.communicator);
+    for (const auto p : owned_particles)
+      if (const LatticeIndex index = lattice.index(p); lattice.inside(index))
+        {
+          axis_bonds(p);
+          for (const auto &[q, weight] : collar_neighbours)
+            model.surrogate_collar.set(lattice.inside_number(index),
+                                       q,
+                                       coupling * weight);
+        }
+    model.surrogate_collar.compress(VectorOperation::insert);
     // Measured optimum (section 16): 0.6 for 2D diffusion (eps = 3h), 2D
     // LPS with a crack (eps = 2h) and the 3D cracked bar (eps = 2h) alike.
     // The two terms overlap at wavelengths between h and eps, hence less
@@ -95,6 +137,7 @@ namespace ltn
     unsigned int,
     double,
     double,
+    const std::vector<double> &,
     double,
     const std::function<bool(const Point<2> &, const Point<2> &)> &,
     DiscreteModel &);
@@ -106,6 +149,7 @@ namespace ltn
     unsigned int,
     double,
     double,
+    const std::vector<double> &,
     double,
     const std::function<bool(const Point<3> &, const Point<3> &)> &,
     DiscreteModel &);

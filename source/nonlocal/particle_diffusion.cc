@@ -1,4 +1,5 @@
 #include <ltn/base/partition.h>
+#include <ltn/nonlocal/collar_trace.h>
 #include <ltn/nonlocal/lattice_operator.h>
 #include <ltn/nonlocal/lattice_surrogate.h>
 #include <ltn/nonlocal/particle_diffusion.h>
@@ -97,6 +98,12 @@ namespace ltn
     double diagonal = 0;
     for (const double a : stencil.coefficients())
       diagonal += 2 * a;
+    // The stencil projected on an axis: the weight of the bonds that reach
+    // m layers along it.
+    std::vector<double> projected(stencil.radius(), 0.);
+    for (std::size_t k = 0; k < stencil.offsets().size(); ++k)
+      if (const int m = stencil.offsets()[k][0]; m > 0)
+        projected[m - 1] += stencil.coefficients()[k];
     assemble_lattice_surrogate<dim>(
       lattice,
       model.owned,
@@ -104,6 +111,7 @@ namespace ltn
       1,
       diagonal,
       1., // the moment conditions make the long-wave limit the Laplacian
+      collar_trace_weights(projected),
       spacing,
       [](const Point<dim> &, const Point<dim> &) { return false; },
       model);

@@ -1,4 +1,5 @@
 #include <ltn/base/partition.h>
+#include <ltn/nonlocal/collar_trace.h>
 #include <ltn/nonlocal/lattice_operator.h>
 #include <ltn/nonlocal/lattice_surrogate.h>
 #include <ltn/nonlocal/particle_elasticity.h>
@@ -371,6 +372,19 @@ namespace ltn
                stencil.bonds()[k][0] / stencil.bonds()[k].norm_square();
       return sum;
     }();
+    // The collar's layers as a shear wave along an axis sees them: a
+    // displacement across axis 0 that varies along it, u = f(x_0) e_1,
+    // changes no dilatation, and each bond reaching m layers along axis 0
+    // weighs it by c_j (xi_j)_1^2 / |xi_j|^2.
+    std::vector<double> projected;
+    for (std::size_t k = 0; k < stencil.bonds().size(); ++k)
+      if (const int m = stencil.offsets()[k][0]; m > 0)
+        {
+          projected.resize(std::max<std::size_t>(projected.size(), m), 0.);
+          projected[m - 1] += stencil.weights()[k] * stencil.bonds()[k][1] *
+                              stencil.bonds()[k][1] /
+                              stencil.bonds()[k].norm_square();
+        }
     assemble_lattice_surrogate<dim>(
       lattice,
       owned_particles,
@@ -378,6 +392,7 @@ namespace ltn
       dim,
       diagonal,
       coefficient_B / (dim * (dim + 2)), // the shear modulus
+      collar_trace_weights(projected),
       spacing,
       [this](const Point<dim> &x, const Point<dim> &y) {
         return near_crack(x) && is_cut(x, y);

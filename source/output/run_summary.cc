@@ -58,6 +58,9 @@ namespace ltn
           preconditioner["explicit controls"] = level.explicit_controls;
           preconditioner["coarse modes"]      = level.coarse_modes;
           preconditioner["setup seconds"] = level.preconditioner_setup_seconds;
+          if (level.nonlocal_block_unknowns > 0)
+            preconditioner["nonlocal block unknowns"] =
+              level.nonlocal_block_unknowns;
         }
       if (level.standalone_seconds > 0)
         j["solver"]["standalone model solves seconds"] =

@@ -138,6 +138,16 @@ namespace ltn
      */
     TrilinosWrappers::SparseMatrix surrogate;
     /**
+     * The surrogate's coupling to the collar, `C`: per row of `surrogate`,
+     * the weight of each bond it drops to a particle of the collar, in the
+     * column of that particle (node; columns partitioned like the owned
+     * nodes). For values `y` on the collar, `surrogate v = C y` gives their
+     * discrete harmonic extension into `Omega_n`, which the preconditioner
+     * of the nonlocal controls' Hessian block observes
+     * (SurrogateHessianBlock). Empty without a surrogate.
+     */
+    TrilinosWrappers::SparseMatrix surrogate_collar;
+    /**
      * The node of each of this rank's rows of `surrogate`, as its place
      * among the owned nodes. The surrogate's rows may be only some of the
      * nodes (a particle model's free ones: the collar's rows are identities

@@ -5,6 +5,7 @@
 
 #include <ltn/coupling/control_coarse_space.h>
 #include <ltn/coupling/reduced_hessian.h>
+#include <ltn/coupling/surrogate_hessian_block.h>
 
 #include <memory>
 #include <optional>
@@ -20,6 +21,12 @@ namespace ltn
     bool enabled = true;
     /** The coarse level's polynomial degree; none: one level only. */
     std::optional<unsigned int> coarse_degree = 1u;
+    /**
+     * The nonlocal controls' block of the block-diagonal level: `D_n +
+     * alpha I`, or the inverse of the SurrogateHessianBlock (`Nonlocal
+     * control block`).
+     */
+    bool surrogate_nonlocal_block = false;
   };
 
   /**
@@ -40,7 +47,12 @@ namespace ltn
    *   in the overlap and is observed directly with its volume, which bounds
    *   `H_nn` from below; its other part, through the nonlocal solve, is
    *   smooth. The nonlocal controls fill a volume collar of particles, far
-   *   too many for explicit columns.
+   *   too many for explicit columns. It misses the smooth part of `H_nn`,
+   *   the fields the collar drives into `Omega_n` that the overlap
+   *   observes over its width `w`: the condition number of
+   *   `D_n^{-1} H_nn` grows like `w / eps`. With `surrogate_nonlocal_block`
+   *   the block is instead the SurrogateHessianBlock, which models that
+   *   part and is inverted exactly (doc/discretization.md, section 20).
    */
   template <int dim>
   class ControlPreconditioner
@@ -59,7 +71,8 @@ namespace ltn
      */
     ControlPreconditioner(const ReducedHessian<dim>        &hessian,
                           const std::optional<unsigned int> coarse_degree,
-                          const bool with_local_block = true);
+                          const bool with_local_block         = true,
+                          const bool surrogate_nonlocal_block = false);
 
     void
     vmult(BlockVectorType &dst, const BlockVectorType &src) const;
@@ -72,6 +85,13 @@ namespace ltn
     unsigned int
     n_coarse_modes() const;
 
+    /**
+     * The size of the saddle-point system that inverts the model of the
+     * nonlocal controls' block (SurrogateHessianBlock); 0 without it.
+     */
+    types::global_dof_index
+    n_nonlocal_block_unknowns() const;
+
   private:
     /** `P^{-1} src`, the block-diagonal level. */
     void
@@ -80,6 +100,8 @@ namespace ltn
 
     /** `D_n + alpha I` over this rank's nonlocal controls. */
     TrilinosWrappers::MPI::Vector nonlocal_diagonal;
+    /** The model of `H_nn`, or null (`D_n + alpha I` alone). */
+    std::unique_ptr<const SurrogateHessianBlock> nonlocal_block;
     /** The Cholesky factor of `H_ll`. */
     LAPACKFullMatrix<double>                  local_block;
     std::unique_ptr<const ControlCoarseSpace> coarse;

@@ -159,6 +159,11 @@ namespace ltn
      * without.
      */
     unsigned int coarse_modes = 0;
+    /**
+     * The size of the saddle-point system that inverts the model of the
+     * nonlocal controls' Hessian block (SurrogateHessianBlock); 0 without.
+     */
+    types::global_dof_index nonlocal_block_unknowns = 0;
     /** Wall time to build that preconditioner. */
     double preconditioner_setup_seconds = 0;
     /**

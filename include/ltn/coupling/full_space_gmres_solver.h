@@ -1,8 +1,8 @@
 #pragma once
 
+#include <ltn/coupling/control_preconditioner.h>
 #include <ltn/coupling/coupling_system.h>
 
-#include <optional>
 
 namespace ltn
 {
@@ -13,15 +13,16 @@ namespace ltn
    * section 18), whose model solves are as @p model_solvers say (for
    * iterative ones, GMRES or CG to `model_solvers.relative_tolerance`) and
    * whose reduced Hessian is approximated by the ControlPreconditioner (its
-   * local block and coarse products built with tight solves; with
-   * @p coarse_degree, two-level). The iteration stops when the residual has
+   * local block and coarse products built with tight solves; as
+   * @p settings say, two-level and with the surrogate nonlocal block). The
+   * iteration stops when the residual has
    * dropped by @p relative_tolerance.
    */
   template <int dim>
   CouplingSolution
-  solve_full_space_gmres(const CouplingSystem<dim>        &system,
-                         const double                      relative_tolerance,
-                         const unsigned int                max_iterations,
-                         const ModelSolverSettings        &model_solvers,
-                         const std::optional<unsigned int> coarse_degree);
+  solve_full_space_gmres(const CouplingSystem<dim> &system,
+                         const double               relative_tolerance,
+                         const unsigned int         max_iterations,
+                         const ModelSolverSettings &model_solvers,
+                         const ControlPreconditionerSettings &settings);
 } // namespace ltn

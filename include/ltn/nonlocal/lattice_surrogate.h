@@ -7,6 +7,7 @@
 #include <ltn/nonlocal/particle_lattice.h>
 
 #include <functional>
+#include <vector>
 
 namespace ltn
 {
@@ -39,7 +40,17 @@ namespace ltn
    * by `model.short_wave_weight` = 0.6 times the ratio of the two long-wave
    * moduli, to its cycle on `L` (doc/discretization.md, section 16).
    *
-   * Fills `model.surrogate` and `model.surrogate_nodes` over this rank's
+   * The same bonds from particles of `Omega_n` to particles of the collar
+   * make the coupling `C` (`model.surrogate_collar`): for values `y` on the
+   * collar, `L v = C y` gives their discrete harmonic extension `v` into
+   * `Omega_n` (doc/discretization.md, section 20). The model's stencil
+   * reaches several layers into the collar, and weighs them unequally: each
+   * bond takes the collar's values on its axis, layer `m` (`m = 1, 2, ...`)
+   * with the weight `collar_trace[m - 1]` (collar_trace_weights()), so that
+   * `C` extends them as the model would.
+   *
+   * Fills `model.surrogate`, `model.surrogate_collar` and
+   * `model.surrogate_nodes` over this rank's
    * @p owned_particles, one row per particle of `Omega_n`,
    * `model.short_wave_weight`, and `model.node_dofs` (@p n_components
    * degrees of freedom per particle) and `model.surrogate_components`.
@@ -53,6 +64,7 @@ namespace ltn
     const unsigned int          n_field_components,
     const double                diagonal,
     const double                long_wave_modulus,
+    const std::vector<double>  &collar_trace,
     const double                spacing,
     const std::function<bool(const Point<dim> &, const Point<dim> &)> &is_cut,
     DiscreteModel                                                     &model);
