@@ -47,7 +47,8 @@ namespace ltn
   struct DirectSolver::Mumps
   {
     Mumps(const TrilinosWrappers::SparseMatrix &matrix,
-          const double                          pivot_threshold)
+          const double                          pivot_threshold,
+          const Symmetry                        symmetry)
       : row_map(matrix.trilinos_matrix().RowMap())
     {
       const MPI_Comm communicator = matrix.get_mpi_communicator();
@@ -87,14 +88,17 @@ namespace ltn
           const auto row = static_cast<MUMPS_INT>(epetra.GRID64(i) + 1);
           for (int k = 0; k < length; ++k)
             {
+              const auto column =
+                static_cast<MUMPS_INT>(epetra.GCID64(row_columns[k]) + 1);
+              if (symmetry == Symmetry::symmetric && column > row)
+                continue;
               rows.push_back(row);
-              columns.push_back(
-                static_cast<MUMPS_INT>(epetra.GCID64(row_columns[k]) + 1));
+              columns.push_back(column);
               values.push_back(row_values[k]);
             }
         }
 
-      instance.start(communicator);
+      instance.start(communicator, symmetry);
       DMUMPS_STRUC_C &id = instance.id;
       // Errors go into our exceptions, not onto the terminal.
       icntl(id, 1) = -1;
@@ -198,12 +202,13 @@ namespace ltn
       bool           started = false;
 
       void
-      start(const MPI_Comm communicator)
+      start(const MPI_Comm communicator, const Symmetry symmetry)
       {
         id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(communicator));
         id.par          = 1; // the host works too
-        id.sym          = 0; // general: saddle points, nonsymmetric models
-        id.job          = -1;
+        // Symmetric indefinite: LDL^T with 1x1 and 2x2 pivots.
+        id.sym = symmetry == Symmetry::symmetric ? 2 : 0;
+        id.job = -1;
         dmumps_c(&id);
         started = true;
         AssertThrow(infog(id, 1) >= 0, ExcMessage(mumps_error(id)));
@@ -228,8 +233,9 @@ namespace ltn
 
 
   DirectSolver::DirectSolver(const TrilinosWrappers::SparseMatrix &matrix,
-                             const double pivot_threshold)
-    : mumps(std::make_unique<Mumps>(matrix, pivot_threshold))
+                             const double   pivot_threshold,
+                             const Symmetry symmetry)
+    : mumps(std::make_unique<Mumps>(matrix, pivot_threshold, symmetry))
   {}
 
 

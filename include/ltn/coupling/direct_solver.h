@@ -40,13 +40,27 @@ namespace ltn
   {
   public:
     /**
+     * What the caller knows of the matrix. `symmetric` (indefinite allowed)
+     * factorizes `L D L^T` from the lower triangle with 1x1 and 2x2 pivots:
+     * half the factor's entries and flops of the general `L U`, and on
+     * saddle points, whose zero diagonal blocks the general factorization
+     * can pivot on only by delaying, far fewer delayed pivots.
+     */
+    enum class Symmetry
+    {
+      general,
+      symmetric
+    };
+
+    /**
      * Factorize @p matrix with MUMPS's relative pivot threshold
      * @p pivot_threshold (a pivot must be at least this fraction of the
      * largest entry of its column). Throws SingularFactorization if MUMPS
      * finds the matrix numerically singular.
      */
     explicit DirectSolver(const TrilinosWrappers::SparseMatrix &matrix,
-                          const double pivot_threshold = 0.5);
+                          const double   pivot_threshold = 0.5,
+                          const Symmetry symmetry        = Symmetry::general);
 
     ~DirectSolver();
 
