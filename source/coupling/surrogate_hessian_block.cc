@@ -2,6 +2,7 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
+#include <ltn/base/matrix_rows.h>
 #include <ltn/coupling/surrogate_hessian_block.h>
 
 #include <algorithm>
@@ -23,33 +24,6 @@ namespace ltn
       types::global_dof_index n_controls = 0;
       types::global_dof_index begin      = 0;
     };
-
-    /**
-     * `f(column, value)` for each stored entry of the locally owned row
-     * @p row of @p matrix. (deal.II's iterators look for the next nonempty
-     * row at an empty one, which made the loop over the mostly empty rows
-     * of C quadratic: 7.9 s at 131,840 unknowns.)
-     */
-    template <typename Function>
-    void
-    for_each_in_row(const TrilinosWrappers::SparseMatrix &matrix,
-                    const types::global_dof_index         row,
-                    const Function                       &f)
-    {
-      const Epetra_CrsMatrix &epetra  = matrix.trilinos_matrix();
-      int                     n       = 0;
-      double                 *values  = nullptr;
-      int                    *columns = nullptr;
-      epetra.ExtractMyRowView(epetra.RowMap().LID(
-                                static_cast<TrilinosWrappers::types::int_type>(
-                                  row)),
-                              n,
-                              values,
-                              columns);
-      for (int k = 0; k < n; ++k)
-        f(static_cast<types::global_dof_index>(epetra.ColMap().GID(columns[k])),
-          values[k]);
-    }
   } // namespace
 
 

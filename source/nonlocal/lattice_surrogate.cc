@@ -74,7 +74,11 @@ namespace ltn
     rows.compress();
     AssertThrow(rows.is_contiguous(), ExcInternalError());
 
+    // The surrogate and C, the same bonds' weights to the collar spread
+    // over its layers, from one pass over the axis bonds for the patterns
+    // and one for the values.
     DynamicSparsityPattern dsp(rows.size(), rows.size(), rows);
+    DynamicSparsityPattern collar_dsp(rows.size(), lattice.n_particles(), rows);
     for (const auto p : owned_particles)
       if (const LatticeIndex index = lattice.index(p); lattice.inside(index))
         {
@@ -83,27 +87,10 @@ namespace ltn
           axis_bonds(p);
           for (const auto q : neighbours)
             dsp.add(row, q);
+          for (const auto &[q, weight] : collar_neighbours)
+            collar_dsp.add(row, q);
         }
     model.surrogate.reinit(rows, rows, dsp, model.communicator);
-    for (const auto p : owned_particles)
-      if (const LatticeIndex index = lattice.index(p); lattice.inside(index))
-        {
-          const auto row = lattice.inside_number(index);
-          model.surrogate.set(row, row, coupling * axis_bonds(p));
-          for (const auto q : neighbours)
-            model.surrogate.set(row, q, -coupling);
-        }
-    model.surrogate.compress(VectorOperation::insert);
-
-    // C: the same bonds' weights, spread over the collar's layers.
-    DynamicSparsityPattern collar_dsp(rows.size(), lattice.n_particles(), rows);
-    for (const auto p : owned_particles)
-      if (const LatticeIndex index = lattice.index(p); lattice.inside(index))
-        {
-          axis_bonds(p);
-          for (const auto &[q, weight] : collar_neighbours)
-            collar_dsp.add(lattice.inside_number(index), q);
-        }
     model.surrogate_collar.reinit(rows,
                                   owned_particles,
                                   collar_dsp,
@@ -111,12 +98,14 @@ namespace ltn
     for (const auto p : owned_particles)
       if (const LatticeIndex index = lattice.index(p); lattice.inside(index))
         {
-          axis_bonds(p);
+          const auto row = lattice.inside_number(index);
+          model.surrogate.set(row, row, coupling * axis_bonds(p));
+          for (const auto q : neighbours)
+            model.surrogate.set(row, q, -coupling);
           for (const auto &[q, weight] : collar_neighbours)
-            model.surrogate_collar.set(lattice.inside_number(index),
-                                       q,
-                                       coupling * weight);
+            model.surrogate_collar.set(row, q, coupling * weight);
         }
+    model.surrogate.compress(VectorOperation::insert);
     model.surrogate_collar.compress(VectorOperation::insert);
     // Measured optimum (section 16): 0.6 for 2D diffusion (eps = 3h), 2D
     // LPS with a crack (eps = 2h) and the 3D cracked bar (eps = 2h) alike.

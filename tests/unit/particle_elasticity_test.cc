@@ -5,6 +5,7 @@
 // and 3D, for both influence functions and several horizons; and a crack
 // across the whole lattice decouples the two sides exactly.
 
+#include <ltn/base/matrix_rows.h>
 #include <ltn/nonlocal/particle_elasticity.h>
 #include <ltn/scene/material.h>
 
@@ -105,22 +106,6 @@ namespace
     return u;
   }
 
-  /** Call f(column, value) for every stored entry of the owned row @p i. */
-  template <typename F>
-  void
-  for_each_entry(const TrilinosWrappers::SparseMatrix &matrix,
-                 const types::global_dof_index         i,
-                 const F                              &f)
-  {
-    const Epetra_CrsMatrix &A = matrix.trilinos_matrix();
-    int                     n = 0;
-    double                 *values;
-    int                    *columns;
-    A.ExtractMyRowView(A.LRID(static_cast<int>(i)), n, values, columns);
-    for (int k = 0; k < n; ++k)
-      f(static_cast<types::global_dof_index>(A.GCID(columns[k])), values[k]);
-  }
-
   /**
    * max over the free rows of |(M x)_i - r_i| / sum_j |M_ij x_j|, where x
    * holds u and theta = div u at every particle (zero where theta is fixed)
@@ -154,7 +139,7 @@ namespace
       if (model.role(i) == DofRole::free)
         {
           double scale = 0;
-          for_each_entry(model.matrix, i, [&](const auto j, const double v) {
+          for_each_in_row(model.matrix, i, [&](const auto j, const double v) {
             scale += std::abs(v * x_ghosted(j));
           });
           const unsigned c        = i % (dim + 1);
@@ -271,7 +256,7 @@ namespace
     for (const auto i : model.owned)
       {
         const double xi = lat.position(lat.index(i / (dim + 1)))[0];
-        for_each_entry(model.matrix, i, [&](const auto j, const double v) {
+        for_each_in_row(model.matrix, i, [&](const auto j, const double v) {
           const double xj = lat.position(lat.index(j / (dim + 1)))[0];
           if ((xi - plane) * (xj - plane) < 0 && v != 0)
             ++coupled;
