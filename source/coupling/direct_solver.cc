@@ -35,6 +35,52 @@ namespace ltn
       return "MUMPS reports INFOG(1) = " + std::to_string(infog(id, 1)) +
              ", INFOG(2) = " + std::to_string(infog(id, 2));
     }
+    /**
+     * Replace @p entries on the host by all ranks' entries, in rank order,
+     * and empty them elsewhere.
+     */
+    template <typename T>
+    void
+    gather_on_host(std::vector<T> &entries, const MPI_Comm communicator)
+    {
+      const unsigned int n_ranks =
+        Utilities::MPI::n_mpi_processes(communicator);
+      if (n_ranks == 1)
+        return;
+      const bool host = Utilities::MPI::this_mpi_process(communicator) == 0;
+      AssertThrow(entries.size() < (std::size_t(1) << 31),
+                  ExcMessage("too many matrix entries on one rank for MUMPS"));
+      const int        count = static_cast<int>(entries.size());
+      std::vector<int> counts(host ? n_ranks : 0), offsets;
+      MPI_Gather(
+        &count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, communicator);
+      std::vector<T> all;
+      if (host)
+        {
+          offsets.resize(n_ranks, 0);
+          std::size_t total = 0;
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            {
+              AssertThrow(total < (std::size_t(1) << 31),
+                          ExcMessage("too many matrix entries for MUMPS's "
+                                     "32-bit counts"));
+              offsets[r] = static_cast<int>(total);
+              total += counts[r];
+            }
+          all.resize(total);
+        }
+      const MPI_Datatype type = Utilities::MPI::mpi_type_id_for_type<T>;
+      MPI_Gatherv(entries.data(),
+                  count,
+                  type,
+                  all.data(),
+                  counts.data(),
+                  offsets.data(),
+                  type,
+                  0,
+                  communicator);
+      entries = std::move(all);
+    }
   } // namespace
 
 
@@ -71,8 +117,6 @@ namespace ltn
 
       // This rank's rows as triplets, numbered from 1 (read from Epetra:
       // deal.II's iterators copy each row they visit, most of the setup).
-      // MUMPS reads them in the factorization only (no iterative
-      // refinement or error analysis asked): they go when it is done.
       std::vector<MUMPS_INT>  rows, columns;
       std::vector<double>     values;
       const Epetra_CrsMatrix &epetra = matrix.trilinos_matrix();
@@ -97,6 +141,15 @@ namespace ltn
               values.push_back(row_values[k]);
             }
         }
+      // The whole matrix on the host, whatever the number of ranks: MUMPS
+      // computes its maximum-weight matching (below) on a centralized matrix
+      // only, and the factors then do not depend on how the rows were
+      // distributed (the analysis runs on the host either way). MUMPS reads
+      // the triplets in the factorization only (no iterative refinement or
+      // error analysis asked): they go when it is done.
+      gather_on_host(rows, communicator);
+      gather_on_host(columns, communicator);
+      gather_on_host(values, communicator);
 
       instance.start(communicator, symmetry);
       DMUMPS_STRUC_C &id = instance.id;
@@ -105,39 +158,32 @@ namespace ltn
       icntl(id, 2) = -1;
       icntl(id, 3) = -1;
       icntl(id, 4) = 0;
+      // A column permutation that maximizes the product of the diagonal
+      // entries (MC64). The full-space optimality system (doc section 9) has
+      // zero diagonals at every state not observed on the overlap and every
+      // multiplier; without it the factorization delayed 92 % of the pivots
+      // (diffusion_3d_convergence: 4.4e11 flops, 1.2e8 factor entries; with
+      // it 9.8e10 and 5.3e7, 0.07 % delayed). The models' own matrices keep
+      // their diagonal.
+      icntl(id, 6) = 5;
       // Approximate minimum degree with detection of quasi-dense rows (the
       // rows of wide nonlocal stencils): faster than MUMPS's automatic
       // choice on the 2D convergence scene (5.8 s against 7.6 s in all).
       icntl(id, 7) = 6;
       // Simultaneous row and column iterative scaling, as Amesos set it.
-      icntl(id, 8) = 7;
-      // The matrix distributed by rows; on one rank given whole, as Amesos
-      // gave it: the distributed form orders the assembly differently, and
-      // the 2D convergence scene's full-space solution on one rank moved by
-      // 4e-8 (relative), out of the 1e-8 two ranks must match
-      // (tests/CMakeLists.txt, mpi.*.np1_equals_np2_*); whole, it is what it
-      // was to the last bit.
-      const bool whole = Utilities::MPI::n_mpi_processes(communicator) == 1;
-      icntl(id, 18)    = whole ? 0 : 3;
-      icntl(id, 20)    = 0; // dense right-hand sides on the host
-      icntl(id, 21)    = 0; // the solution on the host, in place
-      id.cntl[0]       = pivot_threshold;
-      id.n             = static_cast<MUMPS_INT>(n);
-      if (whole)
+      icntl(id, 8)  = 7;
+      icntl(id, 18) = 0; // the matrix centralized on the host
+      icntl(id, 20) = 0; // dense right-hand sides on the host
+      icntl(id, 21) = 0; // the solution on the host, in place
+      id.cntl[0]    = pivot_threshold;
+      id.n          = static_cast<MUMPS_INT>(n);
+      if (host)
         {
           id.nnz = static_cast<MUMPS_INT8>(values.size());
           id.nz  = static_cast<MUMPS_INT>(values.size());
           id.irn = rows.data();
           id.jcn = columns.data();
           id.a   = values.data();
-        }
-      else
-        {
-          id.nnz_loc = static_cast<MUMPS_INT8>(values.size());
-          id.nz_loc  = static_cast<MUMPS_INT>(values.size());
-          id.irn_loc = rows.data();
-          id.jcn_loc = columns.data();
-          id.a_loc   = values.data();
         }
 
       id.job = 1;
@@ -155,8 +201,8 @@ namespace ltn
           dmumps_c(&id);
           if (infog(id, 1) >= 0)
             {
-              id.irn = id.jcn = id.irn_loc = id.jcn_loc = nullptr;
-              id.a = id.a_loc = nullptr;
+              id.irn = id.jcn = nullptr;
+              id.a            = nullptr;
               return;
             }
           if (infog(id, 1) == -10)

@@ -1,5 +1,6 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <ltn/base/matrix_rows.h>
 #include <ltn/coupling/direct_solver.h>
 #include <ltn/coupling/full_space_direct_solver.h>
 
@@ -54,17 +55,11 @@ namespace ltn
           for (const index i : model.owned)
             if (!model.controls.is_element(i))
               {
-                for (auto entry = model.matrix.begin(i);
-                     entry != model.matrix.end(i);
-                     ++entry)
-                  {
-                    matrix_entry(mu_offset[k] + i,
-                                 x_offset[k] + entry->column(),
-                                 entry->value());
-                    matrix_entry(x_offset[k] + entry->column(),
-                                 mu_offset[k] + i,
-                                 entry->value());
-                  }
+                for_each_in_row(
+                  model.matrix, i, [&](const index column, const double value) {
+                    matrix_entry(mu_offset[k] + i, x_offset[k] + column, value);
+                    matrix_entry(x_offset[k] + column, mu_offset[k] + i, value);
+                  });
                 rhs_entry(mu_offset[k] + i, model.rhs(i));
               }
         }
@@ -100,9 +95,9 @@ namespace ltn
         // condensed hanging nodes these can reach beyond the ghost layer.
         std::vector<index> columns;
         for (const index i : model.owned)
-          for (auto entry = model.matrix.begin(i); entry != model.matrix.end(i);
-               ++entry)
-            columns.push_back(x_offset[k] + entry->column());
+          for_each_in_row(model.matrix, i, [&](const index column, double) {
+            columns.push_back(x_offset[k] + column);
+          });
         std::sort(columns.begin(), columns.end());
         columns.erase(std::unique(columns.begin(), columns.end()),
                       columns.end());
