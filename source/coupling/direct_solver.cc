@@ -134,7 +134,7 @@ namespace ltn
             {
               const auto column =
                 static_cast<MUMPS_INT>(epetra.GCID64(row_columns[k]) + 1);
-              if (symmetry == Symmetry::symmetric && column > row)
+              if (symmetry != Symmetry::general && column > row)
                 continue;
               rows.push_back(row);
               columns.push_back(column);
@@ -252,8 +252,11 @@ namespace ltn
       {
         id.comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(communicator));
         id.par          = 1; // the host works too
-        // Symmetric indefinite: LDL^T with 1x1 and 2x2 pivots.
-        id.sym = symmetry == Symmetry::symmetric ? 2 : 0;
+        // MUMPS's SYM: 0 general (LU), 1 symmetric positive definite (LDL^T
+        // without pivoting), 2 symmetric (LDL^T with 1x1 and 2x2 pivots).
+        id.sym = symmetry == Symmetry::general   ? 0 :
+                 symmetry == Symmetry::symmetric ? 2 :
+                                                   1;
         id.job = -1;
         dmumps_c(&id);
         started = true;
@@ -270,8 +273,9 @@ namespace ltn
       }
     };
 
-    Instance                       instance;
-    const Epetra_BlockMap         &row_map;
+    Instance instance;
+    /** A copy (Epetra's maps share their data): the matrix may go. */
+    const Epetra_BlockMap          row_map;
     std::unique_ptr<Epetra_Map>    host_map;
     std::unique_ptr<Epetra_Import> to_host;
   };

@@ -89,11 +89,7 @@ namespace ltn
           }
       }
     else
-      {
-        AssertThrow(!model.matrix_free,
-                    ExcMessage("a direct solver needs the assembled matrix"));
-        direct = std::make_unique<DirectSolver>(model.matrix);
-      }
+      direct = std::make_unique<ModelDirectSolver>(model);
   }
 
 
@@ -116,10 +112,7 @@ namespace ltn
     const ScopedTime time(counts.seconds);
     if (direct)
       {
-        if (transpose)
-          direct->solve_transposed(x, b);
-        else
-          direct->solve(x, b);
+        direct->solve(x, b, transpose);
         return;
       }
 

@@ -4,8 +4,11 @@
 // with cracks (an inner one and one across the lattice) and a collar partly
 // outside the body, assembled and matrix-free; and CG on it solves the
 // forward and the transposed equations as the direct solver does, on any
-// number of ranks.
+// number of ranks. Where no dilatation is eliminated (nonlocal diffusion),
+// the direct solver factorizes that block alone (ModelDirectSolver), and
+// solves as the LU of the whole matrix does.
 
+#include <ltn/coupling/model_direct_solver.h>
 #include <ltn/coupling/model_solver.h>
 #include <ltn/coupling/schur_complement.h>
 
@@ -110,7 +113,64 @@ namespace
       }
     check_solves(assembled.get_model(), matrix_free.get_model());
   }
+
+  /**
+   * ModelDirectSolver against MUMPS's LU of the whole matrix: M x = b and
+   * M^T x = b for random b (outside the free block too), one at a time and
+   * together; returns the largest relative difference.
+   */
+  double
+  difference_to_lu(const DiscreteModel &model)
+  {
+    const ModelDirectSolver                    free_block(model);
+    const DirectSolver                         lu(model.matrix);
+    std::mt19937                               random(7);
+    std::vector<TrilinosWrappers::MPI::Vector> b;
+    for (unsigned int j = 0; j < 3; ++j)
+      b.push_back(random_vector(model, random));
+    double worst = 0;
+    for (const bool transpose : {false, true})
+      {
+        std::vector<TrilinosWrappers::MPI::Vector> together;
+        free_block.solve(together, b, transpose);
+        REQUIRE(together.size() == b.size());
+        for (unsigned int j = 0; j < b.size(); ++j)
+          {
+            auto reference = model.new_vector(), one = model.new_vector();
+            if (transpose)
+              lu.solve_transposed(reference, b[j]);
+            else
+              lu.solve(reference, b[j]);
+            free_block.solve(one, b[j], transpose);
+            worst = std::max({worst,
+                              relative_difference(reference, one),
+                              relative_difference(reference, together[j])});
+          }
+      }
+    return worst;
+  }
 } // namespace
+
+
+
+TEST_CASE("the direct solver factorizes a symmetric free block alone and "
+          "solves as the LU of the whole matrix",
+          "[solvers][unit]")
+{
+  const auto diffusion_2d = layout_diffusion<2>(1. / 32, 3, false);
+  const auto diffusion_3d = layout_diffusion<3>(1. / 16, 3, false);
+  for (const DiscreteModel *model :
+       {&diffusion_2d->get_model(), &diffusion_3d->get_model()})
+    {
+      REQUIRE(ModelDirectSolver(*model).factorizes_free_block());
+      const double difference = difference_to_lu(*model);
+      INFO("largest relative difference " << difference);
+      CHECK(difference < 1e-11);
+    }
+  // LPS eliminates its dilatation: the whole matrix is factorized.
+  const auto lps = cracked_lps<2>(1. / 32, 2, false);
+  CHECK_FALSE(ModelDirectSolver(lps->get_model()).factorizes_free_block());
+}
 
 
 

@@ -45,11 +45,14 @@ namespace ltn
      * half the factor's entries and flops of the general `L U`, and on
      * saddle points, whose zero diagonal blocks the general factorization
      * can pivot on only by delaying, far fewer delayed pivots.
+     * `positive_definite` factorizes `L D L^T` from the lower triangle
+     * without pivoting (the pivot threshold is not used).
      */
     enum class Symmetry
     {
       general,
-      symmetric
+      symmetric,
+      positive_definite
     };
 
     /**

@@ -6,7 +6,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
-#include <ltn/coupling/direct_solver.h>
+#include <ltn/coupling/model_direct_solver.h>
 #include <ltn/coupling/model_preconditioner.h>
 #include <ltn/coupling/schur_complement.h>
 
@@ -215,7 +215,7 @@ namespace ltn
     /** The number of this rank's first control. */
     types::global_dof_index              first_control;
     IndexSet                             control_partition;
-    std::unique_ptr<DirectSolver>        direct;
+    std::unique_ptr<ModelDirectSolver>   direct;
     std::unique_ptr<ModelPreconditioner> preconditioner;
     std::unique_ptr<SchurComplement>     forward_system, adjoint_system;
     mutable WarmStart                    last_forward, last_adjoint;
