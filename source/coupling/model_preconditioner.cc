@@ -25,8 +25,8 @@ namespace ltn
             subset_entry[c * nodes.size() + i] =
               entry_of_position[node_dofs * nodes[i] + c];
       }
-    // Only the particle models' free blocks are symmetric, so only their CG
-    // asks for a subset, and they all have a surrogate.
+    // Only the particle models' CG asks for a subset (ModelSolver), and
+    // they all have a surrogate.
     AssertThrow(on_surrogate || subset.empty(),
                 ExcMessage("a preconditioner on a subset of the entries "
                            "needs the model's lattice surrogate"));

@@ -64,8 +64,11 @@ namespace ltn
                            const ModelSolverSettings &settings)
     : model(model)
     , settings(settings)
+    // CG's preconditioner acts on the free block's entries alone, which
+    // only the particle models' lattice surrogate offers: the FEM models
+    // keep GMRES.
     , use_cg(settings.iterative && settings.conjugate_gradients &&
-             model.symmetric_free_block)
+             model.symmetric_free_block && model.surrogate.m() > 0)
     , tolerance(settings.relative_tolerance)
     , control_dofs(model.controls.begin(), model.controls.end())
   {

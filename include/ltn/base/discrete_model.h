@@ -176,6 +176,9 @@ namespace ltn
      * definite, and so the surrogate's? Particle models' are (their
      * operator is the Hessian of an energy): their solvers may then use CG
      * on it, for `M` and `M^T` alike (doc/discretization.md, section 16).
+     * So are the FEM models' on a mesh without hanging nodes (symmetric
+     * bilinear forms), which a direct solver then factorizes alone
+     * (ModelDirectSolver, section 10).
      */
     bool symmetric_free_block = false;
     /** The near null space for AMG: per mode, a flag per owned dof. */

@@ -20,7 +20,8 @@ namespace ltn
    *
    * Where the model declares `M_FF` symmetric positive definite
    * (DiscreteModel::symmetric_free_block, with no eliminated and no
-   * constrained degrees of freedom: nonlocal diffusion), the factorization
+   * constrained degrees of freedom: nonlocal diffusion, and the FEM models
+   * on meshes without hanging nodes), the factorization
    * is the Cholesky-type `L D L^T` of `blockdiag(M_FF, I)`, half the
    * entries and flops of the `L U` of `M`; the solves move `M_FO` to the
    * right-hand side:

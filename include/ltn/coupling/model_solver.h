@@ -28,8 +28,9 @@ namespace ltn
     bool iterative = false;
     /**
      * With `iterative`: CG on the free block of the Schur complement where
-     * it is symmetric positive definite (DiscreteModel::symmetric_free_block),
-     * for `M` and `M^T` alike; GMRES elsewhere.
+     * it is symmetric positive definite (DiscreteModel::symmetric_free_block)
+     * and the model has a lattice surrogate, for `M` and `M^T` alike; GMRES
+     * elsewhere.
      */
     bool conjugate_gradients = false;
     /**
