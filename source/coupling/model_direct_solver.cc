@@ -85,9 +85,11 @@ namespace ltn
   ModelDirectSolver::ModelDirectSolver(const DiscreteModel &model)
     : model(model)
     , outside(model.controls)
+    // The same choice on every rank: one MUMPS instance factorizes for all.
     , free_block_only(model.symmetric_free_block &&
-                      model.eliminated.is_empty() &&
-                      model.constrained.is_empty())
+                      Utilities::MPI::max(model.eliminated.n_elements() +
+                                            model.constrained.n_elements(),
+                                          model.communicator) == 0)
   {
     AssertThrow(!model.matrix_free,
                 ExcMessage("a direct solver needs the assembled matrix"));
@@ -128,9 +130,7 @@ namespace ltn
   ModelDirectSolver::complete_transposed(TrilinosWrappers::MPI::Vector &y) const
   {
     TrilinosWrappers::MPI::Vector y_free(y);
-    for (const index i : outside)
-      y_free(i) = 0.;
-    y_free.compress(VectorOperation::insert);
+    y_free -= restricted_to(y, outside);
     TrilinosWrappers::MPI::Vector product(y);
     model.matrix.Tvmult(product, y_free);
     for (const index i : outside)
