@@ -20,10 +20,20 @@ namespace ltn
         for (unsigned int e = 0; e < subset.size(); ++e)
           entry_of_position[subset[e]] = e;
         subset_entry.resize(surrogate_components * nodes.size());
+        interleaved = subset.size() == subset_entry.size();
         for (unsigned int c = 0; c < surrogate_components; ++c)
           for (std::size_t i = 0; i < nodes.size(); ++i)
-            subset_entry[c * nodes.size() + i] =
-              entry_of_position[node_dofs * nodes[i] + c];
+            {
+              const unsigned int entry =
+                entry_of_position[node_dofs * nodes[i] + c];
+              subset_entry[c * nodes.size() + i] = entry;
+              interleaved =
+                interleaved && entry == surrogate_components * i + c;
+            }
+        // The free block of a particle model with all its free particles
+        // surrogate nodes: no index lists to read, no entry to copy.
+        if (interleaved)
+          subset_entry = std::vector<unsigned int>();
       }
     // Only the particle models' CG asks for a subset (ModelSolver), and
     // they all have a surrogate.
@@ -145,10 +155,28 @@ namespace ltn
     TrilinosWrappers::MPI::Vector       &dst,
     const TrilinosWrappers::MPI::Vector &src) const
   {
+    const std::size_t n = nodes.size();
+    if (interleaved)
+      {
+        // Per component a strided gather and scatter (at 10^6 particles the
+        // copy and the index lists below were 5 % of a run).
+        const unsigned int stride = surrogate_components;
+        for (unsigned int c = 0; c < surrogate_components; ++c)
+          {
+            const double *in = src.begin() + c;
+            for (std::size_t i = 0; i < n; ++i)
+              node_src.begin()[i] = in[stride * i];
+            amg.vmult(node_dst, node_src);
+            double *out = dst.begin() + c;
+            for (std::size_t i = 0; i < n; ++i)
+              out[stride * i] = node_dst.begin()[i] +
+                                short_wave_scaling[i] * node_src.begin()[i];
+          }
+        return;
+      }
     // The identity where the surrogate leaves a degree of freedom out, as
     // in vmult().
     std::copy(src.begin(), src.end(), dst.begin());
-    const std::size_t n = nodes.size();
     for (unsigned int c = 0; c < surrogate_components; ++c)
       {
         const unsigned int *entry = &subset_entry[c * n];

@@ -307,19 +307,45 @@ namespace ltn
           source = source == 0 ? 0 : 1;
       }
 
+    // Per range, the values below this rank's, its own, those above, in
+    // that order; the other ranks' come through `ghosts`.
     const types::global_dof_index n_dofs = n_components * lattice.n_particles();
-    IndexSet                      read(n_dofs);
-    for (const auto &[from, to] : edge_ranges)
-      if (from < to)
-        read.add_range(n_components * from, n_components * to);
-    read.compress();
-    // A map of exactly these values (a ghosted deal.II vector would hold
-    // the owned ones too), in their order: the lower range, then the
-    // upper one.
-    edges = std::make_unique<Epetra_Vector>(
-      read.make_trilinos_map(communicator, true));
+    IndexSet                      remote(n_dofs);
+    std::size_t                   to = 0, ghost = 0;
+    edge_pieces.clear();
+    const auto add_piece = [&](const std::int64_t from_particle,
+                               const std::int64_t past_particle,
+                               const bool         is_remote) {
+      if (from_particle >= past_particle)
+        return;
+      const std::size_t count = n_components * (past_particle - from_particle);
+      if (is_remote)
+        {
+          remote.add_range(n_components * from_particle,
+                           n_components * past_particle);
+          edge_pieces.push_back({to, ghost, count, true});
+          ghost += count;
+        }
+      else
+        edge_pieces.push_back(
+          {to,
+           n_components * std::size_t(from_particle - own_first),
+           count,
+           false});
+      to += count;
+    };
+    for (const auto &[from, past] : edge_ranges)
+      {
+        add_piece(from, std::min(past, own_first), true);
+        add_piece(std::max(from, own_first), std::min(past, own_end), false);
+        add_piece(std::max(from, own_end), past, true);
+      }
+    remote.compress();
+    edges.assign(to, 0.);
+    ghosts = std::make_unique<Epetra_Vector>(
+      remote.make_trilinos_map(communicator, true));
     importer = std::make_unique<Epetra_Import>(
-      edges->Map(),
+      ghosts->Map(),
       TrilinosWrappers::MPI::Vector(owned_dofs, communicator)
         .trilinos_vector()
         .Map());
@@ -955,11 +981,16 @@ namespace ltn
                                    const bool      transpose,
                                    const RowSubset rows) const
   {
-    // With the plan built once: assigning src to `edges` would build it
+    // With the plan built once: an import into a new vector would build it
     // anew in every product (a few per cent of a solve).
-    const int error = edges->Import(src.trilinos_vector(), *importer, Insert);
+    const int error = ghosts->Import(src.trilinos_vector(), *importer, Insert);
     AssertThrow(error == 0, ExcMessage("importing a vector of other layout"));
-    const double                       *edge_values = edges->Values();
+    for (const EdgePiece &piece : edge_pieces)
+      std::copy_n((piece.from_ghosts ? ghosts->Values() : src.begin()) +
+                    piece.from,
+                  piece.count,
+                  edges.begin() + piece.to);
+    const double                       *edge_values = edges.data();
     const std::array<const double *, 3> x           = {
       {src.trilinos_vector()[0],
                  edge_values,
@@ -1040,7 +1071,7 @@ namespace ltn
            (bond_origin.size() + bond_lo.size() + bond_hi.size()) *
              sizeof(std::int64_t) +
            own_rows[1].memory_consumption() +
-           edges->MyLength() * sizeof(double) +
+           (edges.size() + ghosts->MyLength()) * sizeof(double) +
            own_rows_values[0].memory_consumption() +
            own_rows_values[1].memory_consumption() +
            own_rows_transposed.memory_consumption() +

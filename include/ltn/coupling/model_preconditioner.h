@@ -79,5 +79,11 @@ namespace ltn
      * `numbers::invalid_unsigned_int` if it is outside the subset.
      */
     std::vector<unsigned int> subset_entry;
+    /**
+     * Is the subset's entry of node `i`'s component `c` always
+     * `surrogate_components i + c`, every entry one of them? (Then
+     * `subset_entry` is left empty.)
+     */
+    bool interleaved = false;
   };
 } // namespace ltn

@@ -257,11 +257,25 @@ namespace ltn
      * reached range instead copied every owned value into it first, in
      * every product.
      */
-    std::unique_ptr<Epetra_Vector> edges;
-    /** The plan that fills `edges` from an owned vector, built once. */
+    mutable std::vector<double> edges;
+    /** The values of `edges` other ranks own, in the order of `edges`. */
+    std::unique_ptr<Epetra_Vector> ghosts;
+    /** The plan that fills `ghosts` from an owned vector, built once. */
     std::unique_ptr<Epetra_Import> importer;
+    /**
+     * The pieces of `edges`, in order: `count` values from position `from`
+     * of `ghosts` or (`from_ghosts` false) of the owned values, to position
+     * `to`. Epetra's import had copied the owned ones one by one through
+     * its permutation lists: 3 % of a run of the 3e5 bar on two ranks.
+     */
+    struct EdgePiece
+    {
+      std::size_t to, from, count;
+      bool        from_ghosts;
+    };
+    std::vector<EdgePiece> edge_pieces;
 
-    /** Set `segment_source`, `edge_ranges`, `edges` and `importer`. */
+    /** Set `segment_source`, `edge_ranges`, `edges` and the rest above. */
     void
     read_edges();
 
