@@ -824,9 +824,9 @@ namespace ltn
               {
                 // A particle with any shared row has all its bonds. The run
                 // of such particles from i on goes in groups, whatever their
-                // masks (particles of the collar's first horizon share only
-                // the dilatation row): one per particle, the products of
-                // the particles at a line's ends took a quarter of a
+                // masks (the collar's first horizon shares only the
+                // dilatation row). Groups of equal masks had left the
+                // particles at a line's ends one at a time: a quarter of a
                 // dilatation pass on the 1e5 bar. The last group ends with
                 // the run, overlapping the one before it: both write the
                 // same values there.
