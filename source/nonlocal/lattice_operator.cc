@@ -750,6 +750,8 @@ namespace ltn
     const unsigned char   *mask      = shared.data();
     const std::int64_t     base      = reach_first;
     constexpr unsigned int full      = (1u << n_c) - 1;
+    // The rows a forward product computes.
+    constexpr unsigned int asked = ((1u << a1) - 1) & ~((1u << a0) - 1);
     // The entries (a, b) of the blocks a product needs: the rows a of the
     // subset forward (of B_k), its columns b transposed (of B_{-k}^T, read
     // from the row-major B_{-k} as (b, a)). Transposed, a subset of more
@@ -820,18 +822,28 @@ namespace ltn
             const std::int64_t i    = p;
             const double      *xi   = x + (i - x_first) * n_c;
             const unsigned int rows = mask[i - base];
-            if (!transpose && rows != 0)
+            if (!transpose && (rows & asked) == 0)
+              {
+                // None of the rows asked for is shared (the collar's first
+                // horizon in the displacement rows' product): they are the
+                // stored rows' alone.
+                double *yi = y + (i - static_cast<std::int64_t>(first)) * n_c;
+                for (int a = a0; a < a1; ++a)
+                  yi[a] = 0.;
+                continue;
+              }
+            if (!transpose)
               {
                 // A particle with any shared row has all its bonds. The run
-                // of such particles from i on goes in groups, whatever their
-                // masks (the collar's first horizon shares only the
-                // dilatation row). Groups of equal masks had left the
-                // particles at a line's ends one at a time: a quarter of a
-                // dilatation pass on the 1e5 bar. The last group ends with
-                // the run, overlapping the one before it: both write the
-                // same values there.
+                // of particles from i on with a shared row asked for goes in
+                // groups, whatever their masks. Groups of equal masks had
+                // left the particles at a line's ends one at a time: a
+                // quarter of a dilatation pass on the 1e5 bar. The last
+                // group ends with the run, overlapping the one before it:
+                // both write the same values there.
                 std::int64_t run_end = i + 1;
-                while (run_end < segment_end && mask[run_end - base] != 0)
+                while (run_end < segment_end &&
+                       (mask[run_end - base] & asked) != 0)
                   ++run_end;
                 if (run_end - i >= std::int64_t(group))
                   {
