@@ -8,11 +8,10 @@
 
 namespace ltn
 {
-  NormalEquations::Observation
-  NormalEquations::observe_controls(const BlockVectorType &x) const
+  NormalEquations::States
+  NormalEquations::forward_controls(const BlockVectorType &x) const
   {
-    return observe(
-      {{forward(0, x.block(0), nullptr), forward(1, x.block(1), nullptr)}});
+    return {{forward(0, x.block(0), nullptr), forward(1, x.block(1), nullptr)}};
   }
 
 
@@ -327,9 +326,10 @@ namespace ltn
 
 
   void
-  DeflationSpace::add(const Vector<double> &c,
-                      BlockVectorType      &v,
-                      Observation          &observed) const
+  DeflationSpace::add(const Vector<double>    &c,
+                      BlockVectorType         &v,
+                      Observation             &observed,
+                      NormalEquations::States *added_to) const
   {
     if (Z.empty())
       return;
@@ -369,6 +369,10 @@ namespace ltn
     const Observation added = equations.observe(combined);
     for (std::size_t q = 0; q < observed.size(); ++q)
       observed[q] += added[q];
+    if (added_to)
+      for (const unsigned int k : {0u, 1u})
+        if (combined[k].size() > 0)
+          (*added_to)[k] += combined[k];
   }
 
 
@@ -399,7 +403,8 @@ namespace ltn
     const NormalEquations::Observation              &data,
     NormalEquations::BlockVectorType                &x,
     SolverControl                                   &control,
-    const std::function<void(double residual_norm)> &before_products)
+    const std::function<void(double residual_norm)> &before_products,
+    NormalEquations::States                         *states)
   {
     using BlockVectorType = NormalEquations::BlockVectorType;
     using Observation     = NormalEquations::Observation;
@@ -421,7 +426,7 @@ namespace ltn
       {
         Vector<double> c = coarse.solve_product(x, data);
         c *= -1.;
-        coarse.add(c, x, observed_x);
+        coarse.add(c, x, observed_x, states);
       }
     for (std::size_t q = 0; q < observed_x.size(); ++q)
       observed_x[q] += data[q];
@@ -433,19 +438,25 @@ namespace ltn
       return;
 
     // The direction p = z - Z E^{-1} Z^T A z is A-orthogonal to Z; its
-    // observation F p follows from F z by the same combination.
-    BlockVectorType z                       = r;
-    const auto      preconditioned_residual = [&]() {
+    // observation F p, and its states V p where they are wanted, follow from
+    // those of z by the same combination.
+    BlockVectorType         z = r;
+    NormalEquations::States states_z;
+    const auto              preconditioned_residual = [&]() {
       before_products(residual);
       precondition(z, r);
-      return equations.observe_controls(z);
+      states_z = equations.forward_controls(z);
+      return equations.observe(states_z);
     };
     Observation    observed_z = preconditioned_residual();
     Vector<double> c          = coarse.solve_product(z, observed_z);
     c *= -1.;
-    BlockVectorType p          = z;
-    Observation     observed_p = observed_z;
-    coarse.add(c, p, observed_p);
+    BlockVectorType         p          = z;
+    Observation             observed_p = observed_z;
+    NormalEquations::States states_p;
+    if (states)
+      states_p = states_z;
+    coarse.add(c, p, observed_p, states ? &states_p : nullptr);
     double rz = r * z;
 
     while (true)
@@ -456,6 +467,9 @@ namespace ltn
           throw SolverControl::NoConvergence(step, residual);
         const double step_length = rz / pq;
         x.add(step_length, p);
+        if (states)
+          for (const unsigned int k : {0u, 1u})
+            (*states)[k].add(step_length, states_p[k]);
         r.add(-step_length, q);
         residual                         = r.l2_norm();
         const SolverControl::State state = control.check(++step, residual);
@@ -473,7 +487,10 @@ namespace ltn
         p.sadd(beta, 1., z);
         for (std::size_t i = 0; i < observed_p.size(); ++i)
           observed_p[i] = beta * observed_p[i] + observed_z[i];
-        coarse.add(c, p, observed_p);
+        if (states)
+          for (const unsigned int k : {0u, 1u})
+            states_p[k].sadd(beta, 1., states_z[k]);
+        coarse.add(c, p, observed_p, states ? &states_p : nullptr);
       }
   }
 } // namespace ltn

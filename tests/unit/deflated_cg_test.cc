@@ -277,10 +277,28 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
       BlockVectorType x         = new_vector();
       unsigned int    callbacks = 0;
       SolverControl   control(100, 1e-12 * b.l2_norm());
+      // The states V x (here x itself) are added to what the states held.
+      NormalEquations::States states;
+      for (const unsigned int k : {0u, 1u})
+        {
+          states[k] = zero_state(k);
+          states[k].add(1., b.block(k));
+        }
       solve_deflated_cg(
-        counted.equations, coarse, jacobi, d, x, control, [&](double) {
-          ++callbacks;
-        });
+        counted.equations,
+        coarse,
+        jacobi,
+        d,
+        x,
+        control,
+        [&](double) { ++callbacks; },
+        &states);
+      for (const unsigned int k : {0u, 1u})
+        {
+          states[k] -= b.block(k);
+          states[k] -= x.block(k);
+          CHECK(states[k].l2_norm() < 1e-12 * x.l2_norm());
+        }
       double error = 0, norm = 0;
       for (unsigned int i = 0; i < n; ++i)
         {

@@ -54,9 +54,9 @@ namespace ltn
                                           const std::vector<VectorType> &)>
       forward_columns = {};
 
-    /** `F x`: the forward solves of both models, observed. */
-    Observation
-    observe_controls(const BlockVectorType &x) const;
+    /** `V x`: the forward solves of both models. */
+    States
+    forward_controls(const BlockVectorType &x) const;
 
     /** `F^T W d`: the adjoint solves of the observed residual @p d. */
     BlockVectorType
@@ -108,11 +108,15 @@ namespace ltn
     Vector<double>
     solve_product(const BlockVectorType &v, const Observation &observed) const;
 
-    /** `v += Z c` and `observed += B (V Z) c`. */
+    /**
+     * `v += Z c` and `observed += B (V Z) c`; if @p added_to is given, also
+     * `added_to += V Z c`, per model with columns.
+     */
     void
-    add(const Vector<double> &c,
-        BlockVectorType      &v,
-        Observation          &observed) const;
+    add(const Vector<double>    &c,
+        BlockVectorType         &v,
+        Observation             &observed,
+        NormalEquations::States *added_to = nullptr) const;
 
     /** The number of columns. */
     unsigned int
@@ -211,6 +215,12 @@ namespace ltn
    * iteration's products, @p before_products is called with that norm (an
    * outer method relaxes its inner solves with it). Throws
    * SolverControl::NoConvergence as deal.II's solvers do.
+   *
+   * If @p states is given (both models' vectors), `V x` is added to it: the
+   * states of the iterates follow from those the iterations' forward solves
+   * give, by the recurrences of the iterates, so they are exact to the inner
+   * solves' tolerances, and a final solve for `x` starting from them has
+   * little left to do.
    */
   void
   solve_deflated_cg(
@@ -222,5 +232,6 @@ namespace ltn
     const NormalEquations::Observation              &data,
     NormalEquations::BlockVectorType                &x,
     SolverControl                                   &control,
-    const std::function<void(double residual_norm)> &before_products);
+    const std::function<void(double residual_norm)> &before_products,
+    NormalEquations::States                         *states = nullptr);
 } // namespace ltn
