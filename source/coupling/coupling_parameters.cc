@@ -81,6 +81,17 @@ namespace ltn
         "form, about three times the particles, is factorized once and "
         "costs one pair of triangular solves per application; needs a "
         "particle model, 2D or 3D).");
+      prm.declare_entry(
+        "Time standalone solves",
+        "false",
+        Patterns::Bool(),
+        "Reduced-space CG only: after the coupled solve, solve each model "
+        "once more alone, from zero, with its data and the final controls, "
+        "and report the model solvers' setup and these solves as "
+        "`standalone model solves seconds` in summary.json: what solving "
+        "the two models alone costs with the same solvers and tolerances, "
+        "the reference of benchmarks/scaling. The extra solves count in "
+        "the solve's wall time.");
       prm.declare_entry("Model solvers",
                         "direct",
                         Patterns::Selection("direct|preconditioned gmres|"
@@ -130,10 +141,11 @@ namespace ltn
   {
     prm.enter_subsection("Coupling");
     {
-      method             = prm.get("Method");
-      tikhonov_parameter = prm.get_double("Tikhonov parameter");
-      relative_tolerance = prm.get_double("Relative tolerance");
-      max_iterations     = prm.get_integer("Maximum iterations");
+      method                 = prm.get("Method");
+      tikhonov_parameter     = prm.get_double("Tikhonov parameter");
+      relative_tolerance     = prm.get_double("Relative tolerance");
+      max_iterations         = prm.get_integer("Maximum iterations");
+      time_standalone_solves = prm.get_bool("Time standalone solves");
       const std::string control_preconditioner =
         prm.get("Control preconditioner");
       controls.enabled = control_preconditioner != "none";
@@ -168,6 +180,11 @@ namespace ltn
                   "Coupling/Model solver tolerance",
                   to_string(model_solvers.relative_tolerance),
                   "a tolerance in (0, 1)");
+      check_input(!time_standalone_solves || method == "reduced space cg",
+                  "Coupling/Time standalone solves",
+                  "true",
+                  "`false` unless Coupling/Method = reduced space cg (the "
+                  "only method that solves each model with its own solver)");
       check_input(relative_tolerance > 0 && relative_tolerance < 1,
                   "Coupling/Relative tolerance",
                   to_string(relative_tolerance),
@@ -205,8 +222,12 @@ namespace ltn
   CouplingParameters::solve(const CouplingSystem<dim> &system) const
   {
     if (method == "reduced space cg")
-      return solve_reduced_space_cg(
-        system, relative_tolerance, max_iterations, model_solvers, controls);
+      return solve_reduced_space_cg(system,
+                                    relative_tolerance,
+                                    max_iterations,
+                                    model_solvers,
+                                    controls,
+                                    time_standalone_solves);
     if (method == "full space gmres")
       return solve_full_space_gmres(
         system, relative_tolerance, max_iterations, model_solvers, controls);

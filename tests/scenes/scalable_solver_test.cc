@@ -116,3 +116,40 @@ TEST_CASE("scalable solvers reproduce the direct ones on LPS scenes",
   // is the reduced-space CG with direct model solvers.
   check_scene("lps_bar_3d_linear_patch", {"Coupling/Method=reduced space cg"});
 }
+
+
+
+TEST_CASE("the reduced-space CG's final solves start from the states it "
+          "tracked, and the standalone solves are timed apart",
+          "[solvers][scenes]")
+{
+  std::vector<std::string> sets = matrix_free;
+  sets.insert(sets.end(),
+              {"Coupling/Method=reduced space cg",
+               "Coupling/Model solvers=preconditioned cg",
+               "Coupling/Local model solver=direct",
+               "Coupling/Time standalone solves=true"});
+  const SceneRun run = run_scene("lps_plate_2d_asymptotic_compatibility", sets);
+  for (const auto &level : run.summary.levels)
+    {
+      REQUIRE(level.solve_phases.size() >= 2);
+      const auto &standalone = level.solve_phases.back();
+      const auto &final = level.solve_phases[level.solve_phases.size() - 2];
+      CHECK(standalone.name == "standalone solves");
+      CHECK(final.name == "final solves");
+      CHECK(standalone.solves[ltn::nonlocal_model] == 1);
+      CHECK(final.solves[ltn::nonlocal_model] == 1);
+      // The same solve, from zero and from the tracked states.
+      INFO("final solve " << final.iterations[ltn::nonlocal_model]
+                          << " iterations, standalone "
+                          << standalone.iterations[ltn::nonlocal_model]);
+      CHECK(2 * final.iterations[ltn::nonlocal_model] <
+            standalone.iterations[ltn::nonlocal_model]);
+      CHECK(level.standalone_seconds > standalone.seconds);
+      // The model solvers' totals are the coupled solve's alone.
+      unsigned int solves = 0;
+      for (std::size_t p = 0; p + 1 < level.solve_phases.size(); ++p)
+        solves += level.solve_phases[p].solves[ltn::nonlocal_model];
+      CHECK(solves == level.model_solves[ltn::nonlocal_model]);
+    }
+}

@@ -42,6 +42,8 @@ namespace ltn
     double              tikhonov_parameter = 0;
     double              relative_tolerance = 1e-12;
     unsigned int        max_iterations     = 1000;
+    /** Reduced-space CG: time each model's solve alone afterwards. */
+    bool time_standalone_solves = false;
     /** The preconditioner of the reduced Hessian (ControlPreconditioner). */
     ControlPreconditionerSettings controls;
   };

@@ -167,10 +167,11 @@ namespace ltn
     /** Wall time to build that preconditioner. */
     double preconditioner_setup_seconds = 0;
     /**
-     * Wall time of what solving each model once alone would cost with the
-     * same solvers and tolerances: building both model solvers, and the
-     * last forward solve of each with its data and the final controls (the
-     * reduced-space CG; 0 for the other methods).
+     * Wall time of what solving each model once alone costs with the same
+     * solvers and tolerances: building both model solvers, and a forward
+     * solve of each from zero with its data and the final controls, after
+     * the coupled solve (the reduced-space CG, if asked to time them; else
+     * 0).
      */
     double standalone_seconds = 0;
     /** Per model: its own solver's solves, iterations and memory. */

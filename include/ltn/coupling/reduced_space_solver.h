@@ -20,7 +20,11 @@ namespace ltn
    * residual falls (doc/discretization.md, section 19). CG is preconditioned
    * by the block-diagonal ControlPreconditioner and, with a coarse degree in
    * @p controls, deflated by the polynomial control fields (DeflationSpace:
-   * one forward solve per coarse column, no adjoint solve).
+   * one forward solve per coarse column, no adjoint solve). The final fields
+   * are solved from the states the CG tracked. With
+   * @p time_standalone_solves, each model is then solved once more alone,
+   * from zero, with its data and the final controls, and the model solvers'
+   * setup and these solves are timed as CouplingSolution::standalone_seconds.
    */
   template <int dim>
   CouplingSolution
@@ -28,5 +32,6 @@ namespace ltn
                          const double               relative_tolerance,
                          const unsigned int         max_iterations,
                          const ModelSolverSettings &model_solvers,
-                         const ControlPreconditionerSettings &controls);
+                         const ControlPreconditionerSettings &controls,
+                         const bool time_standalone_solves);
 } // namespace ltn
