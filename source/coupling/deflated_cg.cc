@@ -445,8 +445,11 @@ namespace ltn
     const auto              preconditioned_residual = [&]() {
       before_products(residual);
       precondition(z, r);
-      states_z = equations.forward_controls(z);
-      return equations.observe(states_z);
+      NormalEquations::States u = equations.forward_controls(z);
+      const Observation       observed = equations.observe(u);
+      if (states)
+        states_z = std::move(u); // kept only to form V p
+      return observed;
     };
     Observation    observed_z = preconditioned_residual();
     Vector<double> c          = coarse.solve_product(z, observed_z);
