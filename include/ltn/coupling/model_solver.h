@@ -186,13 +186,16 @@ namespace ltn
     /**
      * Solve `M x = b` (@p transpose: `M^T x = b`); the iterative solver
      * starts from @p x plus the best multiple of @p last's solution, if
-     * given, and replaces it with this solve's.
+     * given, and replaces it with this solve's. Without
+     * @p with_eliminated the iterative solver leaves the eliminated entries
+     * (DiscreteModel::eliminated) zero.
      */
     void
     solve(const bool                           transpose,
           TrilinosWrappers::MPI::Vector       &x,
           const TrilinosWrappers::MPI::Vector &b,
-          WarmStart                           *last) const;
+          WarmStart                           *last,
+          const bool                           with_eliminated = true) const;
 
     /**
      * The iterative solve of `M x = b` (@p transpose: `M^T x = b`) by CG
@@ -204,7 +207,8 @@ namespace ltn
     solve_free_block(const bool                           transpose,
                      TrilinosWrappers::MPI::Vector       &x,
                      const TrilinosWrappers::MPI::Vector &b,
-                     SolverControl                       &control) const;
+                     SolverControl                       &control,
+                     const bool with_eliminated) const;
 
     const DiscreteModel      &model;
     const ModelSolverSettings settings;
@@ -213,6 +217,8 @@ namespace ltn
     /** The residual reduction of the next iterative solves. */
     mutable double                       tolerance;
     std::vector<types::global_dof_index> control_dofs;
+    /** Is a control an eliminated degree of freedom, on any rank? */
+    bool controls_eliminated = false;
     /** The number of this rank's first control. */
     types::global_dof_index              first_control;
     IndexSet                             control_partition;
