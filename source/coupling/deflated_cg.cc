@@ -5,6 +5,7 @@
 #include <ltn/coupling/deflated_cg.h>
 
 #include <algorithm>
+#include <utility>
 
 namespace ltn
 {
@@ -458,7 +459,7 @@ namespace ltn
     Observation             observed_p = observed_z;
     NormalEquations::States states_p;
     if (states)
-      states_p = states_z;
+      states_p = std::move(states_z); // formed anew in each iteration
     coarse.add(c, p, observed_p, states ? &states_p : nullptr);
     double rz = r * z;
 
