@@ -1,6 +1,9 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 
 #include <ltn/coupling/coupling_system.h>
+
+#include <map>
 
 namespace ltn
 {
@@ -162,6 +165,60 @@ namespace ltn
     VectorType owned = models[k]->new_vector();
     owned            = sum;
     return owned;
+  }
+
+
+
+  template <int dim>
+  TrilinosWrappers::SparseMatrix
+  CouplingSystem<dim>::observation_gram(const unsigned int k) const
+  {
+    using index = types::global_dof_index;
+    // sum_q w_q b_q b_q^T over this rank's points. The rows of the points in
+    // one cell share their columns (per component), so each set of columns
+    // sums its rank-one terms in a dense block first; the blocks then go to
+    // the matrix a row at a time. The signs of B_k cancel.
+    const auto &rows =
+      (k == nonlocal_model) ? overlap.nonlocal_rows : overlap.local_rows;
+    std::map<std::vector<index>, std::vector<double>> blocks;
+    std::vector<index>                                columns;
+    for (std::size_t q = 0; q < rows.size(); ++q)
+      {
+        columns.clear();
+        for (const auto &entry : rows[q])
+          columns.push_back(entry.first);
+        const std::size_t    n = columns.size();
+        std::vector<double> &block =
+          blocks.try_emplace(columns, n * n, 0.).first->second;
+        for (std::size_t a = 0; a < n; ++a)
+          {
+            const double wb = overlap.weights[q] * rows[q][a].second;
+            for (std::size_t c = 0; c < n; ++c)
+              block[a * n + c] += wb * rows[q][c].second;
+          }
+      }
+
+    const IndexSet                   &owned = models[k]->owned;
+    TrilinosWrappers::SparsityPattern sparsity(owned,
+                                               owned,
+                                               overlap_columns[k],
+                                               communicator());
+    for (const auto &[block_columns, block] : blocks)
+      for (const index i : block_columns)
+        sparsity.add_entries(i, block_columns.begin(), block_columns.end());
+    sparsity.compress();
+    TrilinosWrappers::SparseMatrix gram(sparsity);
+    for (const auto &[block_columns, block] : blocks)
+      {
+        const std::size_t n = block_columns.size();
+        for (std::size_t a = 0; a < n; ++a)
+          gram.add(block_columns[a],
+                   n,
+                   block_columns.data(),
+                   block.data() + a * n);
+      }
+    gram.compress(VectorOperation::add);
+    return gram;
   }
 
 

@@ -169,14 +169,21 @@ namespace ltn
             std::copy_n(states[k].state(column_in_model[first]),
                         states[k].local_size,
                         column[k].begin());
-            const Observation observed = equations.observe(column);
-            for (unsigned int l = k; l < 2; ++l)
-              if (!states[l].columns.empty())
-                {
-                  const VectorType g = equations.observe_transpose(l, observed);
-                  gradients[l].insert(gradients[l].end(), g.begin(), g.end());
-                  bytes += sizeof(double) * states[l].local_size;
-                }
+            const auto add_gradient = [&](const unsigned int l,
+                                          const VectorType  &g) {
+              gradients[l].insert(gradients[l].end(), g.begin(), g.end());
+              bytes += sizeof(double) * states[l].local_size;
+            };
+            if (equations.observe_alone[k] &&
+                (k == 1 || states[1].columns.empty()))
+              add_gradient(k, equations.observe_alone[k](column[k]));
+            else
+              {
+                const Observation observed = equations.observe(column);
+                for (unsigned int l = k; l < 2; ++l)
+                  if (!states[l].columns.empty())
+                    add_gradient(l, equations.observe_transpose(l, observed));
+              }
             block.push_back(first);
           }
         // The block's columns whose observation gave model l's gradient.

@@ -91,6 +91,15 @@ namespace ltn
     VectorType
     observation_diagonal(const unsigned int k) const;
 
+    /**
+     * `B_k^T W B_k`, assembled over the degrees of freedom of model @p k:
+     * the mismatch's gradient for a field of model @p k alone (the other's
+     * zero) as one sparse product over that model's unknowns, instead of a
+     * pass over all overlap points and back.
+     */
+    TrilinosWrappers::SparseMatrix
+    observation_gram(const unsigned int k) const;
+
     /** The number of controls of both models. */
     types::global_dof_index
     n_controls() const;

@@ -53,6 +53,15 @@ namespace ltn
     std::function<std::vector<VectorType>(unsigned int k,
                                           const std::vector<VectorType> &)>
       forward_columns = {};
+    /**
+     * Optional, per model: `B_k^T W B_k u` for a state `u` of model k alone
+     * (the other's zero) from an assembled matrix, the gradient that
+     * observe_transpose(k, observe(u)) gives by a pass over the overlap
+     * points and back. A coarse column whose entries of `E` need no other
+     * model's gradient then skips that pass.
+     */
+    std::array<std::function<VectorType(const VectorType &)>, 2> observe_alone =
+      {};
 
     /** `V x`: the forward solves of both models. */
     States
