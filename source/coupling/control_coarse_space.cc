@@ -187,64 +187,96 @@ namespace ltn
           Utilities::MPI::min(model.node_positions.empty() ? 0u : 1u,
                               communicator) > 0;
 
-        const IndexSet owned =
-          hessian.solvers[k]->new_control_vector().locally_owned_elements();
-        const types::global_dof_index first =
-          owned.is_empty() ? 0 : owned.nth_index_in_set(0);
-        const types::global_dof_index first_dof =
-          model.owned.is_empty() ? 0 : model.owned.nth_index_in_set(0);
         const auto monomial =
           [&](const std::array<double, 3>       &p,
               const std::array<unsigned int, 3> &exponents) {
             double value = 1;
             for (unsigned int d = 0; d < dim; ++d)
-              value *= std::pow((p[d] - 0.5 * (low[d] + high[d])) / half_width,
-                                exponents[d]);
+              for (unsigned int e = 0; e < exponents[d]; ++e)
+                value *= (p[d] - 0.5 * (low[d] + high[d])) / half_width;
             return value;
           };
-        const std::size_t first_of_model = Z.size();
-        for (const auto &field : polynomial_fields(dim, degree, n_components))
+        const std::vector<std::vector<Term>> fields =
+          polynomial_fields(dim, degree, n_components);
+        // Each kept column as a combination of `fields` (Gram-Schmidt's
+        // coefficients): the extensions are evaluated from these once, at
+        // the end, instead of being updated along with the controls at
+        // every projection, a pass over all of the model's unknowns each.
+        const std::size_t                first_of_model = Z.size();
+        std::vector<std::vector<double>> combinations;
+        for (std::size_t f = 0; f < fields.size(); ++f)
           {
             PolynomialControlField z{k, hessian.new_control_vector(), {}};
-            if (extended)
-              z.extension = model.new_vector();
-            for (const Term &term : field)
-              {
-                for (std::size_t i = 0; i < x.size(); ++i)
-                  if (model.control_components[i] == term.component)
-                    z.controls.block(k)(first + i) +=
-                      term.coefficient * monomial(x[i], term.exponents);
-                for (std::size_t n = 0;
-                     extended && n < model.node_positions.size();
-                     ++n)
-                  z.extension(first_dof + model.node_dofs * n +
-                              term.component) +=
-                    term.coefficient *
-                    monomial(model.node_positions[n], term.exponents);
-              }
-            z.controls.compress(VectorOperation::add);
-            if (extended)
-              z.extension.compress(VectorOperation::add);
+            // This rank's controls in the order of its control positions.
+            TrilinosWrappers::MPI::Vector &controls = z.controls.block(k);
+            for (const Term &term : fields[f])
+              for (std::size_t i = 0; i < x.size(); ++i)
+                if (model.control_components[i] == term.component)
+                  controls.begin()[i] +=
+                    term.coefficient * monomial(x[i], term.exponents);
+            std::vector<double> combination(fields.size(), 0.);
+            combination[f] = 1;
             // Gram-Schmidt, twice, against this model's fields (the other
-            // models' are orthogonal to them), the extension alongside; a
-            // column the others span is dropped (on controls in a plane, x
-            // and 1 are the same field).
+            // models' are orthogonal to them); a column the others span is
+            // dropped (on controls in a plane, x and 1 are the same field).
             const double norm = z.controls.l2_norm();
             for (unsigned int pass = 0; pass < 2; ++pass)
               for (std::size_t j = first_of_model; j < Z.size(); ++j)
                 {
                   const double projection = z.controls * Z[j].controls;
                   z.controls.add(-projection, Z[j].controls);
-                  if (extended)
-                    z.extension.add(-projection, Z[j].extension);
+                  for (std::size_t g = 0; g < fields.size(); ++g)
+                    combination[g] -=
+                      projection * combinations[j - first_of_model][g];
                 }
             const double remaining = z.controls.l2_norm();
             if (remaining > 1e-8 * norm)
               {
                 z.controls /= remaining;
-                if (extended)
-                  z.extension /= remaining;
+                for (double &c : combination)
+                  c /= remaining;
+                combinations.push_back(std::move(combination));
                 Z.push_back(std::move(z));
+              }
+          }
+
+        if (extended)
+          {
+            // Each column as coefficients of the distinct monomials per
+            // component, then evaluated node by node into its extension.
+            const auto          exponents   = monomials(dim, degree);
+            const std::size_t   n_monomials = exponents.size();
+            std::vector<double> monomial_values(n_monomials);
+            for (std::size_t j = first_of_model; j < Z.size(); ++j)
+              {
+                std::vector<double> coefficients(n_components * n_monomials,
+                                                 0.);
+                for (std::size_t f = 0; f < fields.size(); ++f)
+                  for (const Term &term : fields[f])
+                    coefficients[term.component * n_monomials +
+                                 (std::find(exponents.begin(),
+                                            exponents.end(),
+                                            term.exponents) -
+                                  exponents.begin())] +=
+                      combinations[j - first_of_model][f] * term.coefficient;
+                Z[j].extension = model.new_vector();
+                // A node's entries lie at node_dofs * node + c in the order
+                // of `owned`.
+                double *entries = Z[j].extension.begin();
+                for (std::size_t n = 0; n < model.node_positions.size(); ++n)
+                  {
+                    for (std::size_t m = 0; m < n_monomials; ++m)
+                      monomial_values[m] =
+                        monomial(model.node_positions[n], exponents[m]);
+                    for (unsigned int c = 0; c < n_components; ++c)
+                      {
+                        double value = 0;
+                        for (std::size_t m = 0; m < n_monomials; ++m)
+                          value += coefficients[c * n_monomials + m] *
+                                   monomial_values[m];
+                        entries[model.node_dofs * n + c] = value;
+                      }
+                  }
               }
           }
       }
