@@ -174,6 +174,8 @@ namespace ltn
               gradients[l].insert(gradients[l].end(), g.begin(), g.end());
               bytes += sizeof(double) * states[l].local_size;
             };
+            // Only model k's own gradient is needed where no later model
+            // has columns: the assembled B_k^T W B_k, if given, serves.
             if (equations.observe_alone[k] &&
                 (k == 1 || states[1].columns.empty()))
               add_gradient(k, equations.observe_alone[k](column[k]));

@@ -144,8 +144,8 @@ namespace ltn
           }};
         // B_l^T W B_l assembled: each local coarse column's entries of E
         // are then a sparse product over the local unknowns, not a pass
-        // over every overlap point and back (78 columns took 4.5 s of the
-        // 10^6 bar of benchmarks/scaling that way).
+        // over every overlap point and back (78 columns took about 4 s of
+        // the 10^6 bar of benchmarks/scaling that way).
         std::optional<TrilinosWrappers::SparseMatrix> local_gram;
         if (two_level)
           {
