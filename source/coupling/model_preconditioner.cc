@@ -104,9 +104,11 @@ namespace ltn
       std::make_unique<StencilMatrix>(model.surrogate.trilinos_matrix());
     if (!stencil->is_stencil() || !stencil->serve_finest_level(amg))
       stencil.reset();
-    node_src.reinit(model.surrogate.locally_owned_domain_indices(),
-                    model.communicator);
-    node_dst.reinit(node_src);
+    node_src.assign(surrogate_components,
+                    TrilinosWrappers::MPI::Vector(
+                      model.surrogate.locally_owned_domain_indices(),
+                      model.communicator));
+    node_dst = node_src;
     // The short-wave term (doc/discretization.md, section 16): on the 3D
     // cracked bar of benchmarks/scaling it took the nonlocal CG iterations
     // from 831 to 600 (1e4) and from 877 to 686 (1e5).
@@ -139,12 +141,13 @@ namespace ltn
     std::copy(src.begin(), src.end(), dst.begin());
     for (unsigned int c = 0; c < surrogate_components; ++c)
       {
+        double *const node_in = node_src[c].begin();
         for (std::size_t i = 0; i < nodes.size(); ++i)
-          node_src.begin()[i] = src.begin()[node_dofs * nodes[i] + c];
-        amg.vmult(node_dst, node_src);
+          node_in[i] = src.begin()[node_dofs * nodes[i] + c];
+        amg.vmult(node_dst[c], node_src[c]);
         for (std::size_t i = 0; i < nodes.size(); ++i)
           dst.begin()[node_dofs * nodes[i] + c] =
-            node_dst.begin()[i] + short_wave_scaling[i] * node_src.begin()[i];
+            node_dst[c].begin()[i] + short_wave_scaling[i] * node_in[i];
       }
   }
 
@@ -158,21 +161,26 @@ namespace ltn
     const std::size_t n = nodes.size();
     if (interleaved)
       {
-        // Per component a strided gather and scatter, without the copy and
-        // the index lists below (on the 3e5 bar of benchmarks/scaling the
-        // preconditioner took 6.9-7.2 s instead of 7.3-7.4 s).
-        const unsigned int stride = surrogate_components;
-        for (unsigned int c = 0; c < surrogate_components; ++c)
+        // One gather of all components and one scatter, without the copy
+        // and the index lists below (on the 3e5 bar of benchmarks/scaling
+        // the preconditioner took 6.9-7.2 s instead of 7.3-7.4 s); a gather
+        // and a scatter per component passed over the whole vector each.
+        const unsigned int    stride = surrogate_components;
+        std::vector<double *> in(stride), out(stride);
+        for (unsigned int c = 0; c < stride; ++c)
           {
-            const double *in = src.begin() + c;
-            for (std::size_t i = 0; i < n; ++i)
-              node_src.begin()[i] = in[stride * i];
-            amg.vmult(node_dst, node_src);
-            double *out = dst.begin() + c;
-            for (std::size_t i = 0; i < n; ++i)
-              out[stride * i] = node_dst.begin()[i] +
-                                short_wave_scaling[i] * node_src.begin()[i];
+            in[c]  = node_src[c].begin();
+            out[c] = node_dst[c].begin();
           }
+        for (std::size_t i = 0; i < n; ++i)
+          for (unsigned int c = 0; c < stride; ++c)
+            in[c][i] = src.begin()[stride * i + c];
+        for (unsigned int c = 0; c < stride; ++c)
+          amg.vmult(node_dst[c], node_src[c]);
+        for (std::size_t i = 0; i < n; ++i)
+          for (unsigned int c = 0; c < stride; ++c)
+            dst.begin()[stride * i + c] =
+              out[c][i] + short_wave_scaling[i] * in[c][i];
         return;
       }
     // The identity where the surrogate leaves a degree of freedom out, as
@@ -180,16 +188,17 @@ namespace ltn
     std::copy(src.begin(), src.end(), dst.begin());
     for (unsigned int c = 0; c < surrogate_components; ++c)
       {
-        const unsigned int *entry = &subset_entry[c * n];
+        const unsigned int *entry   = &subset_entry[c * n];
+        double *const       node_in = node_src[c].begin();
         for (std::size_t i = 0; i < n; ++i)
-          node_src.begin()[i] = entry[i] == numbers::invalid_unsigned_int ?
-                                  0. :
-                                  src.begin()[entry[i]];
-        amg.vmult(node_dst, node_src);
+          node_in[i] = entry[i] == numbers::invalid_unsigned_int ?
+                         0. :
+                         src.begin()[entry[i]];
+        amg.vmult(node_dst[c], node_src[c]);
         for (std::size_t i = 0; i < n; ++i)
           if (entry[i] != numbers::invalid_unsigned_int)
             dst.begin()[entry[i]] =
-              node_dst.begin()[i] + short_wave_scaling[i] * node_src.begin()[i];
+              node_dst[c].begin()[i] + short_wave_scaling[i] * node_in[i];
       }
   }
 
@@ -198,9 +207,12 @@ namespace ltn
   std::size_t
   ModelPreconditioner::memory_consumption() const
   {
+    std::size_t node_vectors = 0;
+    for (const auto *vectors : {&node_src, &node_dst})
+      for (const auto &v : *vectors)
+        node_vectors += v.memory_consumption();
     return amg.memory_consumption() + amg_matrix.memory_consumption() +
-           (stencil ? stencil->memory_consumption() : 0) +
-           node_src.memory_consumption() + node_dst.memory_consumption() +
+           (stencil ? stencil->memory_consumption() : 0) + node_vectors +
            nodes.size() * (sizeof(unsigned int) + sizeof(double)) +
            (subset.size() + subset_entry.size()) * sizeof(unsigned int);
   }

@@ -67,8 +67,12 @@ namespace ltn
      * product where its rows are one; else empty.
      */
     std::unique_ptr<StencilMatrix> stencil;
-    /** One component of a vector, over the surrogate's nodes. */
-    mutable TrilinosWrappers::MPI::Vector node_src, node_dst;
+    /**
+     * Per component, a vector's values at the surrogate's nodes: all of
+     * them at once, so that the interleaved gather and scatter pass over a
+     * vector once, not once per component.
+     */
+    mutable std::vector<TrilinosWrappers::MPI::Vector> node_src, node_dst;
     /** `short_wave_weight` over the surrogate's diagonal, per owned row. */
     std::vector<double> short_wave_scaling;
     /** The subset of the constructor. */
