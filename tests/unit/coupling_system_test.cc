@@ -9,13 +9,11 @@
 #include <deal.II/base/function.h>
 
 #include <ltn/coupling/coupling_system.h>
-#include <ltn/coupling/overlap_quadrature.h>
 #include <ltn/local/elasticity_problem.h>
-#include <ltn/local/poisson_problem.h>
 
 #include <catch2/catch.hpp>
 
-#include "particle_layout.h"
+#include "coupled_layout.h"
 
 using namespace ltn;
 
@@ -53,23 +51,11 @@ TEST_CASE("the observation's Gram matrix is the mismatch gradient of one "
           "model's field, diffusion and Poisson in 2D",
           "[coupling]")
 {
-  constexpr int       dim      = 2;
-  const Geometry<dim> geometry = particle_layout<dim>();
-  const double        h = 0.125, spacing = h / 4, m = 2;
-
-  LocalParameters<dim> parameters;
-  parameters.dirichlet_faces = {0, 2};
-  PoissonProblem<dim> local(geometry, parameters, h, MPI_COMM_WORLD);
-  const Functions::ConstantFunction<dim> one(1.), flux(0.5, dim);
-  local.assemble(one, one, flux);
-
-  const auto particles = layout_diffusion<dim>(spacing, m, false);
-  const auto overlap   = create_overlap_quadrature(geometry,
-                                                 m * spacing,
-                                                 *particles,
-                                                 local.get_dof_handler());
-  check_observation_gram(
-    CouplingSystem<dim>(particles->get_model(), local.get_model(), overlap, 0));
+  const DiffusionPoissonLayout<2> layout(0.125, 0.125 / 4, 2);
+  check_observation_gram(CouplingSystem<2>(layout.particles->get_model(),
+                                           layout.local.get_model(),
+                                           layout.overlap,
+                                           0));
 }
 
 

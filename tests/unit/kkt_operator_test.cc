@@ -5,16 +5,12 @@
 // diffusion on the shared particle layout coupled to Poisson, with the
 // particle operator assembled and matrix-free, Tikhonov term on.
 
-#include <deal.II/base/function.h>
-
 #include <ltn/coupling/full_space_direct_solver.h>
 #include <ltn/coupling/kkt_operator.h>
-#include <ltn/coupling/overlap_quadrature.h>
-#include <ltn/local/poisson_problem.h>
 
 #include <catch2/catch.hpp>
 
-#include "particle_layout.h"
+#include "coupled_layout.h"
 
 using namespace ltn;
 
@@ -58,29 +54,20 @@ TEST_CASE("the KKT operator is the assembled optimality system with scaled "
           "multipliers",
           "[coupling]")
 {
-  constexpr int       dim      = 2;
-  const Geometry<dim> geometry = particle_layout<dim>();
-  const double        h = 0.125, spacing = h / 4, m = 2, alpha = 0.3;
-
-  LocalParameters<dim> parameters;
-  parameters.dirichlet_faces = {0, 2};
-  PoissonProblem<dim> local(geometry, parameters, h, MPI_COMM_WORLD);
-  const Functions::ConstantFunction<dim> one(1.), flux(0.5, dim);
-  local.assemble(one, one, flux);
-
+  constexpr int dim = 2;
+  const double  h = 0.125, spacing = h / 4, m = 2, alpha = 0.3;
   // The assembled model gives K (and the overlap: the lattice is the same);
   // the operator works on the model as the solvers see it.
-  const auto assembled = layout_diffusion<dim>(spacing, m, false);
-  const auto overlap   = create_overlap_quadrature(geometry,
-                                                 m * spacing,
-                                                 *assembled,
-                                                 local.get_dof_handler());
-  const CouplingSystem<dim>      reference(assembled->get_model(),
+  const DiffusionPoissonLayout<dim> layout(h, spacing, m);
+  const auto                       &assembled = layout.particles;
+  const auto                       &local     = layout.local;
+  const auto                       &overlap   = layout.overlap;
+  const CouplingSystem<dim>         reference(assembled->get_model(),
                                       local.get_model(),
                                       overlap,
                                       alpha);
-  TrilinosWrappers::SparseMatrix K;
-  TrilinosWrappers::MPI::Vector  b;
+  TrilinosWrappers::SparseMatrix    K;
+  TrilinosWrappers::MPI::Vector     b;
   assemble_full_space_system(reference, K, b);
   const IndexSet owned = b.locally_owned_elements();
 
