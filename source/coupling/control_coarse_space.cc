@@ -195,26 +195,32 @@ namespace ltn
                 value *= (p[d] - 0.5 * (low[d] + high[d])) / half_width;
             return value;
           };
-        const std::vector<std::vector<Term>> fields =
-          polynomial_fields(dim, degree, n_components);
-        // Each kept column as a combination of `fields` (Gram-Schmidt's
-        // coefficients): the extensions are evaluated from these once, at
-        // the end, instead of being updated along with the controls at
-        // every projection, a pass over all of the model's unknowns each.
+        // Each kept column as coefficients of the monomials per component
+        // (`c n_monomials + m`), updated along with its controls by
+        // Gram-Schmidt: the extensions are evaluated from these once, at the
+        // end, instead of being updated at every projection, a pass over all
+        // of the model's unknowns each.
+        const auto                       exponents   = monomials(dim, degree);
+        const std::size_t                n_monomials = exponents.size();
         const std::size_t                first_of_model = Z.size();
-        std::vector<std::vector<double>> combinations;
-        for (std::size_t f = 0; f < fields.size(); ++f)
+        std::vector<std::vector<double>> coefficients;
+        for (const auto &field : polynomial_fields(dim, degree, n_components))
           {
             PolynomialControlField z{k, hessian.new_control_vector(), {}};
+            std::vector<double>    column(n_components * n_monomials, 0.);
             // This rank's controls in the order of its control positions.
             TrilinosWrappers::MPI::Vector &controls = z.controls.block(k);
-            for (const Term &term : fields[f])
-              for (std::size_t i = 0; i < x.size(); ++i)
-                if (model.control_components[i] == term.component)
-                  controls.begin()[i] +=
-                    term.coefficient * monomial(x[i], term.exponents);
-            std::vector<double> combination(fields.size(), 0.);
-            combination[f] = 1;
+            for (const Term &term : field)
+              {
+                for (std::size_t i = 0; i < x.size(); ++i)
+                  if (model.control_components[i] == term.component)
+                    controls.begin()[i] +=
+                      term.coefficient * monomial(x[i], term.exponents);
+                column[term.component * n_monomials +
+                       (std::find(
+                          exponents.begin(), exponents.end(), term.exponents) -
+                        exponents.begin())] += term.coefficient;
+              }
             // Gram-Schmidt, twice, against this model's fields (the other
             // models' are orthogonal to them); a column the others span is
             // dropped (on controls in a plane, x and 1 are the same field).
@@ -224,57 +230,41 @@ namespace ltn
                 {
                   const double projection = z.controls * Z[j].controls;
                   z.controls.add(-projection, Z[j].controls);
-                  for (std::size_t g = 0; g < fields.size(); ++g)
-                    combination[g] -=
-                      projection * combinations[j - first_of_model][g];
+                  for (std::size_t a = 0; a < column.size(); ++a)
+                    column[a] -=
+                      projection * coefficients[j - first_of_model][a];
                 }
             const double remaining = z.controls.l2_norm();
             if (remaining > 1e-8 * norm)
               {
                 z.controls /= remaining;
-                for (double &c : combination)
+                for (double &c : column)
                   c /= remaining;
-                combinations.push_back(std::move(combination));
+                coefficients.push_back(std::move(column));
                 Z.push_back(std::move(z));
               }
           }
 
-        if (extended)
+        std::vector<double> monomial_values(n_monomials);
+        for (std::size_t j = first_of_model; extended && j < Z.size(); ++j)
           {
-            // Each column as coefficients of the distinct monomials per
-            // component, then evaluated node by node into its extension.
-            const auto          exponents   = monomials(dim, degree);
-            const std::size_t   n_monomials = exponents.size();
-            std::vector<double> monomial_values(n_monomials);
-            for (std::size_t j = first_of_model; j < Z.size(); ++j)
+            const std::vector<double> &column =
+              coefficients[j - first_of_model];
+            Z[j].extension = model.new_vector();
+            // A node's entries lie at node_dofs * node + c in the order of
+            // `owned`.
+            double *entries = Z[j].extension.begin();
+            for (std::size_t n = 0; n < model.node_positions.size(); ++n)
               {
-                std::vector<double> coefficients(n_components * n_monomials,
-                                                 0.);
-                for (std::size_t f = 0; f < fields.size(); ++f)
-                  for (const Term &term : fields[f])
-                    coefficients[term.component * n_monomials +
-                                 (std::find(exponents.begin(),
-                                            exponents.end(),
-                                            term.exponents) -
-                                  exponents.begin())] +=
-                      combinations[j - first_of_model][f] * term.coefficient;
-                Z[j].extension = model.new_vector();
-                // A node's entries lie at node_dofs * node + c in the order
-                // of `owned`.
-                double *entries = Z[j].extension.begin();
-                for (std::size_t n = 0; n < model.node_positions.size(); ++n)
+                for (std::size_t m = 0; m < n_monomials; ++m)
+                  monomial_values[m] =
+                    monomial(model.node_positions[n], exponents[m]);
+                for (unsigned int c = 0; c < n_components; ++c)
                   {
+                    double value = 0;
                     for (std::size_t m = 0; m < n_monomials; ++m)
-                      monomial_values[m] =
-                        monomial(model.node_positions[n], exponents[m]);
-                    for (unsigned int c = 0; c < n_components; ++c)
-                      {
-                        double value = 0;
-                        for (std::size_t m = 0; m < n_monomials; ++m)
-                          value += coefficients[c * n_monomials + m] *
-                                   monomial_values[m];
-                        entries[model.node_dofs * n + c] = value;
-                      }
+                      value += column[c * n_monomials + m] * monomial_values[m];
+                    entries[model.node_dofs * n + c] = value;
                   }
               }
           }
