@@ -35,7 +35,7 @@ namespace ltn
                        const TrilinosWrappers::MPI::Vector &src) const
   {
     if (matrix_free)
-      matrix_free->vmult_rows(dst, src, false, RowSubset::all);
+      matrix_free->vmult_rows(dst, src, false, RowSubset::all, nullptr);
     else
       matrix.vmult(dst, src);
   }
@@ -47,7 +47,7 @@ namespace ltn
                         const TrilinosWrappers::MPI::Vector &src) const
   {
     if (matrix_free)
-      matrix_free->vmult_rows(dst, src, true, RowSubset::all);
+      matrix_free->vmult_rows(dst, src, true, RowSubset::all, nullptr);
     else
       matrix.Tvmult(dst, src);
   }
@@ -58,14 +58,27 @@ namespace ltn
   DiscreteModel::vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
                             const TrilinosWrappers::MPI::Vector &src,
                             const bool                           transpose,
-                            const RowSubset                      rows) const
+                            const RowSubset                      rows,
+                            const RowRanges                     *within) const
   {
     if (matrix_free)
-      matrix_free->vmult_rows(dst, src, transpose, rows);
+      matrix_free->vmult_rows(dst, src, transpose, rows, within);
     else if (transpose)
       matrix.Tvmult(dst, src);
     else
       matrix.vmult(dst, src);
+  }
+
+
+
+  std::vector<RowRanges>
+  DiscreteModel::rows_near(const TrilinosWrappers::MPI::Vector &marked,
+                           const unsigned int                   layers) const
+  {
+    if (matrix_free)
+      return matrix_free->rows_near(marked, layers);
+    const auto all = static_cast<unsigned int>(owned.n_elements());
+    return std::vector<RowRanges>(layers + 1, RowRanges{{0u, all}});
   }
 
 

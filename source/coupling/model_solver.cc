@@ -196,7 +196,7 @@ namespace ltn
     TrilinosWrappers::MPI::Vector product = model.new_vector();
     if (!transpose)
       {
-        block.vmult(product, outside);
+        block.vmult_from_outside(product, outside);
         block.restrict_to_free_block(product);
         rhs -= product;
       }
@@ -256,7 +256,7 @@ namespace ltn
       {
         // (S^T y_F)_O; S^T's rows at the eliminated degrees of freedom are
         // zero.
-        adjoint_system->vmult(product, x);
+        adjoint_system->vmult_at_outside(product, x);
         TrilinosWrappers::MPI::Vector in_block = product;
         block.restrict_to_free_block(in_block);
         product -= in_block;

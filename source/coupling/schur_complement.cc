@@ -23,6 +23,14 @@ namespace ltn
         }
     free.compress(VectorOperation::insert);
     free_partition = contiguous_partition(free_list.size(), model.communicator);
+    {
+      TrilinosWrappers::MPI::Vector outside = model.new_vector();
+      for (const auto i : model.owned)
+        if (model.role(i) != DofRole::free && !model.eliminated.is_element(i))
+          outside(i) = 1.;
+      outside.compress(VectorOperation::insert);
+      near_outside = model.rows_near(outside, 2);
+    }
     if (!eliminates)
       return;
     kept             = model.new_vector();
@@ -53,6 +61,35 @@ namespace ltn
       model.vmult_rows(dst, src, transpose, RowSubset::all);
     else
       masked_product(dst, src, kept);
+  }
+
+
+
+  void
+  SchurComplement::vmult_from_outside(
+    TrilinosWrappers::MPI::Vector       &dst,
+    const TrilinosWrappers::MPI::Vector &src) const
+  {
+    // S = A - B D^-1 C: C src is zero beyond one bond of src's entries, and
+    // the product with it beyond two.
+    if (!eliminates)
+      model.vmult_rows(dst, src, transpose, RowSubset::all, &near_outside[1]);
+    else
+      masked_product(dst, src, kept, {{&near_outside[1], &near_outside[2]}});
+  }
+
+
+
+  void
+  SchurComplement::vmult_at_outside(
+    TrilinosWrappers::MPI::Vector       &dst,
+    const TrilinosWrappers::MPI::Vector &src) const
+  {
+    // The rows u there read D^-1 C src within one bond of them.
+    if (!eliminates)
+      model.vmult_rows(dst, src, transpose, RowSubset::all, &near_outside[0]);
+    else
+      masked_product(dst, src, kept, {{&near_outside[1], &near_outside[0]}});
   }
 
 
@@ -128,9 +165,10 @@ namespace ltn
 
   void
   SchurComplement::masked_product(
-    TrilinosWrappers::MPI::Vector       &dst,
-    const TrilinosWrappers::MPI::Vector &src,
-    const TrilinosWrappers::MPI::Vector &mask) const
+    TrilinosWrappers::MPI::Vector          &dst,
+    const TrilinosWrappers::MPI::Vector    &src,
+    const TrilinosWrappers::MPI::Vector    &mask,
+    const std::array<const RowRanges *, 2> &near_rows) const
   {
     // Loops over the owned values, not vector operations: `v = src` of
     // two vectors made apart imports (deal.II 9.4 compares their
@@ -140,7 +178,7 @@ namespace ltn
     const std::size_t n = v.locally_owned_size();
     for (std::size_t i = 0; i < n; ++i)
       v.begin()[i] = src.begin()[i] * mask.begin()[i];
-    product_of_work_vector(dst);
+    product_of_work_vector(dst, near_rows);
     dst.scale(mask);
   }
 
@@ -148,21 +186,22 @@ namespace ltn
 
   void
   SchurComplement::product_of_work_vector(
-    TrilinosWrappers::MPI::Vector &dst) const
+    TrilinosWrappers::MPI::Vector          &dst,
+    const std::array<const RowRanges *, 2> &near_rows) const
   {
     if (!eliminates)
       {
-        model.vmult_rows(dst, v, transpose, RowSubset::all);
+        model.vmult_rows(dst, v, transpose, RowSubset::all, near_rows[1]);
         return;
       }
     // The t-rows of M [u; 0]: C u; v = [u; -D^-1 C u].
-    model.vmult_rows(w, v, transpose, RowSubset::eliminated);
+    model.vmult_rows(w, v, transpose, RowSubset::eliminated, near_rows[0]);
     const std::size_t n = v.locally_owned_size();
     for (std::size_t i = 0; i < n; ++i)
       v.begin()[i] -= inverse_diagonal.begin()[i] * w.begin()[i];
     // The u-rows of M v: A u - B D^-1 C u (into w too, if dst is w: its
     // t-rows are used by then).
-    model.vmult_rows(dst, v, transpose, RowSubset::kept);
+    model.vmult_rows(dst, v, transpose, RowSubset::kept, near_rows[1]);
   }
 
 
@@ -211,7 +250,11 @@ namespace ltn
   std::size_t
   SchurComplement::memory_consumption() const
   {
+    std::size_t ranges = 0;
+    for (const RowRanges &rows : near_outside)
+      ranges += rows.size();
     return (eliminates ? 5 : 3) * free.memory_consumption() +
-           free_list.size() * sizeof(unsigned int);
+           free_list.size() * sizeof(unsigned int) +
+           ranges * sizeof(RowRanges::value_type);
   }
 } // namespace ltn

@@ -744,6 +744,7 @@ namespace ltn
   LatticeOperator<dim>::apply_stencil(
     const std::array<const double *, 3> &sources,
     const std::array<std::int64_t, 3>   &sources_first,
+    const ParticleRanges                *within,
     double                              *y) const
   {
     const unsigned int     n_offsets = offsets.size();
@@ -808,6 +809,8 @@ namespace ltn
               load(row + (r * period + w % period) * lanes) * xw;
         }
     };
+    // The range of within that the segment's particles reach.
+    std::size_t range = 0;
     for (std::size_t s = 0; s + 1 < segment_start.size(); ++s)
       {
         const std::int64_t *origin = &bond_origin[s * n_offsets];
@@ -817,116 +820,141 @@ namespace ltn
         const double      *x           = sources[segment_source[s]];
         const std::int64_t x_first     = sources_first[segment_source[s]];
         const std::int64_t segment_end = segment_start[s + 1];
-        for (std::int64_t p = segment_start[s]; p < segment_end; ++p)
+        // The segment's particles [from, to) within, zero before them.
+        std::int64_t next = segment_start[s];
+        while (next < segment_end)
           {
-            const std::int64_t i    = p;
-            const double      *xi   = x + (i - x_first) * n_c;
-            const unsigned int rows = mask[i - base];
-            if (!transpose && (rows & asked) == 0)
+            std::int64_t from = next, to = segment_end;
+            if (within)
               {
-                // None of the rows asked for is shared (the collar's first
-                // horizon in the displacement rows' product): they are the
-                // stored rows' alone.
-                double *yi = y + (i - static_cast<std::int64_t>(first)) * n_c;
-                for (int a = a0; a < a1; ++a)
-                  yi[a] = 0.;
-                continue;
+                while (range < within->size() &&
+                       (*within)[range].second <= next)
+                  ++range;
+                from = range < within->size() ?
+                         std::clamp((*within)[range].first, next, segment_end) :
+                         segment_end;
+                to   = range < within->size() ?
+                         std::min((*within)[range].second, segment_end) :
+                         segment_end;
+                for (std::int64_t i = next; i < from; ++i)
+                  for (int a = a0; a < a1; ++a)
+                    y[(i - std::int64_t(first)) * n_c + a] = 0.;
               }
-            if (!transpose)
+            for (std::int64_t p = from; p < to; ++p)
               {
-                // A particle with any shared row has all its bonds. The run
-                // of particles from i on with a shared row asked for goes in
-                // groups, whatever their masks. Groups of equal masks had
-                // left the particles at a line's ends one at a time: a
-                // quarter of a dilatation pass on the 1e5 bar. The last
-                // group ends with the run, overlapping the one before it:
-                // both write the same values there.
-                std::int64_t run_end = i + 1;
-                while (run_end < segment_end &&
-                       (mask[run_end - base] & asked) != 0)
-                  ++run_end;
-                if (run_end - i >= std::int64_t(group))
+                const std::int64_t i    = p;
+                const double      *xi   = x + (i - x_first) * n_c;
+                const unsigned int rows = mask[i - base];
+                if (!transpose && (rows & asked) == 0)
                   {
-                    for (std::int64_t q = i; q < run_end; q += group)
-                      {
-                        const std::int64_t i0 = std::min(q, run_end - group);
-                        for (auto &row : group_sum)
-                          row.fill(Lanes{});
-                        add_group(n_offsets, x + (i0 - x_first) * n_c);
-                        for (unsigned int k = 0; k < n_offsets; ++k)
-                          add_group(k, x + (origin[k] + i0 - x_first) * n_c);
-                        double *y0 =
-                          y + (i0 - static_cast<std::int64_t>(first)) * n_c;
-                        for (unsigned int g = 0; g < group; ++g)
-                          {
-                            const unsigned int shared = mask[i0 + g - base];
-                            for (int r = 0; r < n_rows; ++r)
-                              {
-                                double total = 0;
-                                for (int b = 0; b < n_c; ++b)
-                                  {
-                                    const int m = g * n_c + b;
-                                    total += group_sum[r][m / lanes][m % lanes];
-                                  }
-                                // A row that is not shared is the stored
-                                // rows' alone.
-                                y0[g * n_c + a0 + r] =
-                                  (shared >> (a0 + r)) & 1u ? total : 0.;
-                              }
-                          }
-                      }
-                    p = run_end - 1;
+                    // None of the rows asked for is shared (the collar's first
+                    // horizon in the displacement rows' product): they are the
+                    // stored rows' alone.
+                    double *yi =
+                      y + (i - static_cast<std::int64_t>(first)) * n_c;
+                    for (int a = a0; a < a1; ++a)
+                      yi[a] = 0.;
                     continue;
                   }
-              }
-            for (auto &row : sum)
-              row.fill(0.);
-            // Read per particle: hoisted out of the loops, it made GCC 12
-            // compile the transposed product 30 % slower.
-            const double *centre = &blocks[n_offsets * n_c * n_c];
-            if (!transpose)
-              {
-                if (rows != 0)
+                if (!transpose)
                   {
-                    add(centre, xi, rows);
+                    // A particle with any shared row has all its bonds. The run
+                    // of particles from i on with a shared row asked for goes
+                    // in groups, whatever their masks. Groups of equal masks
+                    // had left the particles at a line's ends one at a time: a
+                    // quarter of a dilatation pass on the 1e5 bar. The last
+                    // group ends with the run, overlapping the one before it:
+                    // both write the same values there.
+                    std::int64_t run_end = i + 1;
+                    while (run_end < to && (mask[run_end - base] & asked) != 0)
+                      ++run_end;
+                    if (run_end - i >= std::int64_t(group))
+                      {
+                        for (std::int64_t q = i; q < run_end; q += group)
+                          {
+                            const std::int64_t i0 =
+                              std::min(q, run_end - group);
+                            for (auto &row : group_sum)
+                              row.fill(Lanes{});
+                            add_group(n_offsets, x + (i0 - x_first) * n_c);
+                            for (unsigned int k = 0; k < n_offsets; ++k)
+                              add_group(k,
+                                        x + (origin[k] + i0 - x_first) * n_c);
+                            double *y0 =
+                              y + (i0 - static_cast<std::int64_t>(first)) * n_c;
+                            for (unsigned int g = 0; g < group; ++g)
+                              {
+                                const unsigned int shared = mask[i0 + g - base];
+                                for (int r = 0; r < n_rows; ++r)
+                                  {
+                                    double total = 0;
+                                    for (int b = 0; b < n_c; ++b)
+                                      {
+                                        const int m = g * n_c + b;
+                                        total +=
+                                          group_sum[r][m / lanes][m % lanes];
+                                      }
+                                    // A row that is not shared is the stored
+                                    // rows' alone.
+                                    y0[g * n_c + a0 + r] =
+                                      (shared >> (a0 + r)) & 1u ? total : 0.;
+                                  }
+                              }
+                          }
+                        p = run_end - 1;
+                        continue;
+                      }
+                  }
+                for (auto &row : sum)
+                  row.fill(0.);
+                // Read per particle: hoisted out of the loops, it made GCC 12
+                // compile the transposed product 30 % slower.
+                const double *centre = &blocks[n_offsets * n_c * n_c];
+                if (!transpose)
+                  {
+                    if (rows != 0)
+                      {
+                        add(centre, xi, rows);
+                        for (unsigned int k = 0; k < n_offsets; ++k)
+                          add(&blocks[k * n_c * n_c],
+                              x + (origin[k] + i - x_first) * n_c,
+                              rows);
+                      }
+                  }
+                else if (interior[i - static_cast<std::int64_t>(first)])
+                  {
+                    // Every bond partner's rows are the shared ones.
+                    add(centre, xi, full);
                     for (unsigned int k = 0; k < n_offsets; ++k)
-                      add(&blocks[k * n_c * n_c],
+                      add(&blocks[reverse[k] * n_c * n_c],
                           x + (origin[k] + i - x_first) * n_c,
-                          rows);
+                          full);
                   }
-              }
-            else if (interior[i - static_cast<std::int64_t>(first)])
-              {
-                // Every bond partner's rows are the shared ones.
-                add(centre, xi, full);
-                for (unsigned int k = 0; k < n_offsets; ++k)
-                  add(&blocks[reverse[k] * n_c * n_c],
-                      x + (origin[k] + i - x_first) * n_c,
-                      full);
-              }
-            else
-              {
-                // The partners' shared rows are the rows i reads.
-                if (rows != 0)
-                  add(centre, xi, rows);
-                for (unsigned int k = 0; k < n_offsets; ++k)
+                else
                   {
-                    const std::int64_t j = origin[k] + i;
-                    if (j < lo[k] || j >= hi[k] || mask[j - base] == 0)
-                      continue;
-                    add(&blocks[reverse[k] * n_c * n_c],
-                        x + (j - x_first) * n_c,
-                        mask[j - base]);
+                    // The partners' shared rows are the rows i reads.
+                    if (rows != 0)
+                      add(centre, xi, rows);
+                    for (unsigned int k = 0; k < n_offsets; ++k)
+                      {
+                        const std::int64_t j = origin[k] + i;
+                        if (j < lo[k] || j >= hi[k] || mask[j - base] == 0)
+                          continue;
+                        add(&blocks[reverse[k] * n_c * n_c],
+                            x + (j - x_first) * n_c,
+                            mask[j - base]);
+                      }
+                  }
+                double *yi = y + (i - static_cast<std::int64_t>(first)) * n_c;
+                for (int a = a0; a < a1; ++a)
+                  {
+                    double total = 0;
+                    for (int b = 0; b < n_c; ++b)
+                      total += transpose ? sum[b][a] : sum[a][b];
+                    yi[a] = total;
                   }
               }
-            double *yi = y + (i - static_cast<std::int64_t>(first)) * n_c;
-            for (int a = a0; a < a1; ++a)
-              {
-                double total = 0;
-                for (int b = 0; b < n_c; ++b)
-                  total += transpose ? sum[b][a] : sum[a][b];
-                yi[a] = total;
-              }
+            next = std::max(from, to);
           }
       }
   }
@@ -987,11 +1015,8 @@ namespace ltn
 
 
   template <int dim>
-  void
-  LatticeOperator<dim>::vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
-                                   const TrilinosWrappers::MPI::Vector &src,
-                                   const bool      transpose,
-                                   const RowSubset rows) const
+  std::pair<std::array<const double *, 3>, std::array<std::int64_t, 3>>
+  LatticeOperator<dim>::gather(const TrilinosWrappers::MPI::Vector &src) const
   {
     // With the plan built once: an import into a new vector would build it
     // anew in every product (a few per cent of a solve).
@@ -1002,30 +1027,59 @@ namespace ltn
                     piece.from,
                   piece.count,
                   edges.begin() + piece.to);
-    const double                       *edge_values = edges.data();
-    const std::array<const double *, 3> x           = {
-      {src.trilinos_vector()[0],
-                 edge_values,
-                 edge_values +
-                   n_components * (edge_ranges[0].second - edge_ranges[0].first)}};
-    const std::array<std::int64_t, 3> x_first = {
-      {std::int64_t(first), edge_ranges[0].first, edge_ranges[1].first}};
-    double *y = dst.trilinos_vector()[0];
+    const double *edge_values = edges.data();
+    return {
+      {{src.trilinos_vector()[0],
+        edge_values,
+        edge_values +
+          n_components * (edge_ranges[0].second - edge_ranges[0].first)}},
+      {{std::int64_t(first), edge_ranges[0].first, edge_ranges[1].first}}};
+  }
+
+
+
+  template <int dim>
+  void
+  LatticeOperator<dim>::vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
+                                   const TrilinosWrappers::MPI::Vector &src,
+                                   const bool       transpose,
+                                   const RowSubset  rows,
+                                   const RowRanges *within) const
+  {
+    const auto  sources = gather(src);
+    const auto &x       = sources.first;
+    const auto &x_first = sources.second;
+    // The particles of the rows within.
+    ParticleRanges particles;
+    if (within)
+      for (const auto &[from, past] : *within)
+        {
+          const std::int64_t p = first + from / n_components,
+                             q =
+                               first + (past + n_components - 1) / n_components;
+          if (!particles.empty() && particles.back().second >= p)
+            particles.back().second = std::max(particles.back().second, q);
+          else if (p < q)
+            particles.emplace_back(p, q);
+        }
+    const ParticleRanges *particles_within = within ? &particles : nullptr;
+    double               *y                = dst.trilinos_vector()[0];
     // Rows outside the subset keep whatever dst held; so do the stored rows
     // outside it, except in the transposed product, whose stored part sums
     // over all rows.
-    with_block_size(n_components,
-                    n_eliminated_components,
-                    rows,
-                    [&](auto n_c, auto a0, auto a1) {
-                      constexpr int n  = decltype(n_c)::value;
-                      constexpr int r0 = decltype(a0)::value;
-                      constexpr int r1 = decltype(a1)::value;
-                      if (transpose)
-                        apply_stencil<n, true, r0, r1>(x, x_first, y);
-                      else
-                        apply_stencil<n, false, r0, r1>(x, x_first, y);
-                    });
+    with_block_size(
+      n_components,
+      n_eliminated_components,
+      rows,
+      [&](auto n_c, auto a0, auto a1) {
+        constexpr int n  = decltype(n_c)::value;
+        constexpr int r0 = decltype(a0)::value;
+        constexpr int r1 = decltype(a1)::value;
+        if (transpose)
+          apply_stencil<n, true, r0, r1>(x, x_first, particles_within, y);
+        else
+          apply_stencil<n, false, r0, r1>(x, x_first, particles_within, y);
+      });
     if (!scaled_owned.empty() || !touched.empty())
       with_block_size(n_components,
                       n_eliminated_components,
@@ -1068,6 +1122,67 @@ namespace ltn
             for (std::size_t i = 0; i < entries.size(); ++i)
               dst.begin()[entries[i]] += values.begin()[i];
           }
+      }
+  }
+
+
+
+  template <int dim>
+  std::vector<RowRanges>
+  LatticeOperator<dim>::rows_near(const TrilinosWrappers::MPI::Vector &marked,
+                                  const unsigned int layers) const
+  {
+    const std::int64_t n_c         = n_components;
+    const std::size_t  n_owned     = end - first;
+    const auto         any_nonzero = [n_c](const double *values) {
+      return std::any_of(values, values + n_c, [](const double value) {
+        return value != 0.;
+      });
+    };
+    std::vector<bool> in_layer(n_owned);
+    for (std::size_t p = 0; p < n_owned; ++p)
+      in_layer[p] = any_nonzero(marked.begin() + n_c * p);
+    std::vector<RowRanges>        result;
+    TrilinosWrappers::MPI::Vector indicator(marked);
+    for (unsigned int layer = 0;; ++layer)
+      {
+        RowRanges &rows = result.emplace_back();
+        for (std::size_t p = 0; p < n_owned; ++p)
+          if (in_layer[p])
+            {
+              const auto position = static_cast<unsigned int>(n_c * p);
+              if (!rows.empty() && rows.back().second == position)
+                rows.back().second += n_c;
+              else
+                rows.emplace_back(position, position + n_c);
+            }
+        if (layer == layers)
+          return result;
+
+        // The next layer: the particles whose bonds reach this one (the
+        // offsets are closed under negation: also those it reaches).
+        for (std::size_t p = 0; p < n_owned; ++p)
+          std::fill_n(indicator.begin() + n_c * p, n_c, in_layer[p] ? 1. : 0.);
+        const auto        sources   = gather(indicator);
+        std::vector<bool> next      = in_layer;
+        const std::size_t n_offsets = offsets.size();
+        for (std::size_t s = 0; s + 1 < segment_start.size(); ++s)
+          {
+            const double      *x       = sources.first[segment_source[s]];
+            const std::int64_t x_first = sources.second[segment_source[s]];
+            for (std::int64_t i = segment_start[s];
+                 i < std::int64_t(segment_start[s + 1]);
+                 ++i)
+              for (std::size_t k = 0; k < n_offsets && !next[i - first]; ++k)
+                {
+                  const std::int64_t j = bond_origin[s * n_offsets + k] + i;
+                  if (j >= bond_lo[s * n_offsets + k] &&
+                      j < bond_hi[s * n_offsets + k] &&
+                      any_nonzero(x + (j - x_first) * n_c))
+                    next[i - first] = true;
+                }
+          }
+        in_layer.swap(next);
       }
   }
 

@@ -2,7 +2,8 @@
 // dilatation at the free displacements; doc/discretization.md, section 16)
 // is symmetric and positive, for nonlocal diffusion and LPS in 2D and 3D,
 // with cracks (an inner one and one across the lattice) and a collar partly
-// outside the body, assembled and matrix-free; and CG on it solves the
+// outside the body, assembled and matrix-free; its products from and at the
+// controls and fixed data equal the whole ones; and CG on it solves the
 // forward and the transposed equations as the direct solver does, on any
 // number of ranks. Where no dilatation is eliminated (nonlocal diffusion),
 // the direct solver factorizes that block alone (ModelDirectSolver), and
@@ -54,6 +55,49 @@ namespace
   {
     other -= reference;
     return other.linfty_norm() / reference.linfty_norm();
+  }
+
+  /**
+   * The products with `S` of a vector outside the free block and `t`, and
+   * at those rows, that compute only the rows they need
+   * (SchurComplement::vmult_from_outside(), vmult_at_outside()), against
+   * the whole product: the largest relative difference, at every row and at
+   * those rows respectively, forward and transposed.
+   */
+  double
+  outside_product_difference(const DiscreteModel &model)
+  {
+    std::mt19937 random(11);
+    double       worst      = 0;
+    const auto   is_outside = [&](const types::global_dof_index i) {
+      return model.role(i) != DofRole::free && !model.eliminated.is_element(i);
+    };
+    for (const bool transpose : {false, true})
+      {
+        const SchurComplement S(model, transpose);
+        const auto            x       = random_vector(model, random);
+        auto                  outside = x;
+        for (const auto i : model.owned)
+          if (!is_outside(i))
+            outside(i) = 0.;
+        outside.compress(VectorOperation::insert);
+        auto whole = model.new_vector(), part = model.new_vector();
+        // A marker first: a row the product missed would keep it.
+        part = 1e300;
+        S.vmult(whole, outside);
+        S.vmult_from_outside(part, outside);
+        worst = std::max(worst, relative_difference(whole, part));
+
+        part = 1e300;
+        S.vmult(whole, x);
+        S.vmult_at_outside(part, x);
+        for (const auto i : model.owned)
+          if (!is_outside(i))
+            part(i) = whole(i);
+        part.compress(VectorOperation::insert);
+        worst = std::max(worst, relative_difference(whole, part));
+      }
+    return worst;
   }
 
   /**
@@ -110,6 +154,9 @@ namespace
         const double difference = asymmetry(*model);
         INFO(name << ": asymmetry " << difference);
         CHECK(difference < 1e-13);
+        const double outside = outside_product_difference(*model);
+        INFO(name << ": products outside the free block " << outside);
+        CHECK(outside < 1e-13);
       }
     check_solves(assembled.get_model(), matrix_free.get_model());
   }

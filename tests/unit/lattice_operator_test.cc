@@ -4,11 +4,15 @@
 // freedom only (the LPS dilatation), for nonlocal diffusion and LPS in 2D
 // and 3D, with cracks (an inner one and one across the lattice) and a collar
 // partly outside the body (volume constraint) and partly inside (controls);
+// and the products of only the rows near the collar where they are exact;
 // on any number of ranks.
 
 #include <ltn/nonlocal/lattice_operator.h>
 
 #include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <array>
 
 #include "particle_layout.h"
 
@@ -59,6 +63,91 @@ namespace
     return worst;
   }
 
+  /**
+   * Products restricted to the rows near some degrees of freedom
+   * (MatrixFreeOperator::rows_near(), of those that are not free: the
+   * collar): for a random vector zero outside layer `l`, the rows within
+   * layer `l + 1` give the whole product (`l` = 0, 1); for any random
+   * vector, the rows within layer 0 give its rows there. The largest
+   * difference to the whole product, relative, over both transposes and
+   * all row subsets; CHECKs that each layer is larger than the one before.
+   */
+  double
+  near_rows_difference(const DiscreteModel &model)
+  {
+    REQUIRE(model.matrix_free != nullptr);
+    auto marked = model.new_vector();
+    for (const auto i : model.owned)
+      if (model.role(i) != DofRole::free)
+        marked(i) = 1.;
+    marked.compress(VectorOperation::insert);
+    const std::vector<RowRanges> layers = model.rows_near(marked, 2);
+    REQUIRE(layers.size() == 3);
+    const auto inside = [&](const unsigned int layer) {
+      std::vector<bool> is_inside(model.owned.n_elements());
+      for (const auto &[from, past] : layers[layer])
+        std::fill(is_inside.begin() + from, is_inside.begin() + past, true);
+      return is_inside;
+    };
+    std::vector<unsigned int> sizes;
+    for (unsigned int layer = 0; layer < 3; ++layer)
+      {
+        const auto is_inside = inside(layer);
+        sizes.push_back(Utilities::MPI::sum<unsigned int>(
+          std::count(is_inside.begin(), is_inside.end(), true),
+          model.communicator));
+      }
+    INFO("rows within 0, 1, 2 bonds of the collar: "
+         << sizes[0] << ", " << sizes[1] << ", " << sizes[2] << " of "
+         << model.owned.size());
+    CHECK(sizes[0] > 0);
+    CHECK(sizes[0] < sizes[1]);
+    CHECK(sizes[1] < sizes[2]);
+
+    std::mt19937 random(9);
+    double       worst = 0;
+    // (layer of x's support, or 3 for all; layer of the rows computed and
+    // compared, or 3 for all rows compared).
+    for (const auto &[support, within, compared] :
+         std::vector<std::array<unsigned int, 3>>{{{0, 1, 3}},
+                                                  {{1, 2, 3}},
+                                                  {{3, 0, 0}}})
+      for (const bool transpose : {false, true})
+        for (const RowSubset rows :
+             {RowSubset::all, RowSubset::kept, RowSubset::eliminated})
+          {
+            auto x = random_vector(model, random);
+            if (support < 3)
+              {
+                const auto is_inside = inside(support);
+                for (std::size_t p = 0; p < is_inside.size(); ++p)
+                  if (!is_inside[p])
+                    x.begin()[p] = 0.;
+              }
+            auto y = model.new_vector(), z = model.new_vector();
+            model.vmult_rows(y, x, transpose, RowSubset::all);
+            // A marker first: a row the product missed would keep it.
+            z = 1e300;
+            model.vmult_rows(z, x, transpose, rows, &layers[within]);
+            const auto is_compared =
+              compared < 3 ? inside(compared) :
+                             std::vector<bool>(model.owned.n_elements(), true);
+            for (std::size_t p = 0; p < is_compared.size(); ++p)
+              {
+                const bool in_subset = rows == RowSubset::all ||
+                                       model.eliminated.is_element(
+                                         model.owned.nth_index_in_set(p)) ==
+                                         (rows == RowSubset::eliminated);
+                if (!is_compared[p] || !in_subset)
+                  z.begin()[p] = y.begin()[p];
+              }
+            const double scale = y.linfty_norm();
+            z -= y;
+            worst = std::max(worst, z.linfty_norm() / scale);
+          }
+    return worst;
+  }
+
   template <int dim>
   void
   check_elasticity(const double h, const double m)
@@ -75,6 +164,7 @@ namespace
              << " scaled, " << op.n_compressed_rows()
              << " compressed, difference " << difference);
     CHECK(difference < 1e-13);
+    CHECK(near_rows_difference(matrix_free->get_model()) < 1e-13);
     for (const RowSubset rows : {RowSubset::kept, RowSubset::eliminated})
       CHECK(product_difference(assembled->get_model(),
                                matrix_free->get_model(),
@@ -101,6 +191,7 @@ namespace
       product_difference(assembled->get_model(), matrix_free->get_model());
     INFO(dim << "D diffusion, m = " << m << ": difference " << difference);
     CHECK(difference < 1e-13);
+    CHECK(near_rows_difference(matrix_free->get_model()) < 1e-13);
   }
 } // namespace
 

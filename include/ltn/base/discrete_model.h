@@ -9,6 +9,7 @@
 
 #include <array>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace ltn
@@ -40,6 +41,12 @@ namespace ltn
   };
 
   /**
+   * Rows of a product on one rank: ranges `[first, end)` of positions among
+   * its owned values, ascending and disjoint.
+   */
+  using RowRanges = std::vector<std::pair<unsigned int, unsigned int>>;
+
+  /**
    * A model's operator `M` applied without an assembled matrix (the
    * LatticeOperator of particle models), on vectors over the model's owned
    * degrees of freedom.
@@ -51,13 +58,29 @@ namespace ltn
 
     /**
      * `M src` (@p transpose: `M^T src`) at the rows of @p rows; the other
-     * entries of @p dst are unspecified.
+     * entries of @p dst are unspecified. With @p within, the rows outside
+     * those ranges are computed as if @p src were zero wherever the rows
+     * within do not read it: exact wherever it is (rows_near()).
      */
     virtual void
     vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
                const TrilinosWrappers::MPI::Vector &src,
                const bool                           transpose,
-               const RowSubset                      rows) const = 0;
+               const RowSubset                      rows,
+               const RowRanges                     *within) const = 0;
+
+    /**
+     * This rank's rows within @p layers bonds of the nonzero entries of
+     * @p marked, for each number of layers from 0 to @p layers: layer 0
+     * the particles of the nonzero entries, layer `l + 1` those that layer
+     * `l` reads or that read it (the bonds are symmetric), all their rows.
+     * A product of a vector that is zero outside layer 0 is zero outside
+     * layer 1 (of `M` and of `M^T`), and its product again outside layer
+     * 2. Collective.
+     */
+    virtual std::vector<RowRanges>
+    rows_near(const TrilinosWrappers::MPI::Vector &marked,
+              const unsigned int                   layers) const = 0;
 
     /** Bytes this rank holds for the operator. */
     virtual std::size_t
@@ -198,13 +221,24 @@ namespace ltn
     /**
      * `M src` (@p transpose: `M^T src`) at the rows of @p rows; the other
      * entries of @p dst are unspecified. Matrix-free, the other rows are not
-     * computed; assembled, the whole product is.
+     * computed, and with @p within (MatrixFreeOperator::vmult_rows()) those
+     * outside it as if @p src were zero where they read it; assembled, the
+     * whole product is computed.
      */
     void
     vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
                const TrilinosWrappers::MPI::Vector &src,
                const bool                           transpose,
-               const RowSubset                      rows) const;
+               const RowSubset                      rows,
+               const RowRanges                     *within = nullptr) const;
+
+    /**
+     * MatrixFreeOperator::rows_near(); assembled, every layer is all owned
+     * rows (the whole product is computed anyway).
+     */
+    std::vector<RowRanges>
+    rows_near(const TrilinosWrappers::MPI::Vector &marked,
+              const unsigned int                   layers) const;
 
     /** Bytes this rank holds for `M`, the surrogate and the right side. */
     std::size_t

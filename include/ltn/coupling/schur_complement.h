@@ -4,6 +4,9 @@
 
 #include <ltn/base/discrete_model.h>
 
+#include <array>
+#include <vector>
+
 namespace ltn
 {
   using namespace dealii;
@@ -34,6 +37,25 @@ namespace ltn
     void
     vmult(TrilinosWrappers::MPI::Vector       &dst,
           const TrilinosWrappers::MPI::Vector &src) const;
+
+    /**
+     * `dst = S src` for @p src zero in the free block and at `t` (the
+     * controls' and fixed data's values): only the rows within two bonds
+     * of those degrees of freedom (one without `t`) are computed, the rest
+     * are zero (on the 10^6 bar of benchmarks/scaling, a fifth of the rows).
+     */
+    void
+    vmult_from_outside(TrilinosWrappers::MPI::Vector       &dst,
+                       const TrilinosWrappers::MPI::Vector &src) const;
+
+    /**
+     * `S src` at the degrees of freedom outside the free block and `t`
+     * (the controls and fixed data); the other entries of @p dst are
+     * unspecified. Only the rows that these read are computed.
+     */
+    void
+    vmult_at_outside(TrilinosWrappers::MPI::Vector       &dst,
+                     const TrilinosWrappers::MPI::Vector &src) const;
 
     /**
      * `dst = Z S Z src`, with `Z` zeroing all but the free degrees of
@@ -90,19 +112,28 @@ namespace ltn
     memory_consumption() const;
 
   private:
-    /** `dst = diag(mask) S diag(mask) src`. */
+    /**
+     * `dst = diag(mask) S diag(mask) src`; @p near_rows as for
+     * product_of_work_vector().
+     */
     void
-    masked_product(TrilinosWrappers::MPI::Vector       &dst,
-                   const TrilinosWrappers::MPI::Vector &src,
-                   const TrilinosWrappers::MPI::Vector &mask) const;
+    masked_product(TrilinosWrappers::MPI::Vector          &dst,
+                   const TrilinosWrappers::MPI::Vector    &src,
+                   const TrilinosWrappers::MPI::Vector    &mask,
+                   const std::array<const RowRanges *, 2> &near_rows = {
+                     {nullptr, nullptr}}) const;
 
     /**
      * `dst = S v` at the rows `u` (the other entries unspecified), for the
      * work vector `v` as the caller set it; overwrites `v`, and `w` unless
-     * @p dst is `w`.
+     * @p dst is `w`. With @p near_rows, only the rows `t` within
+     * `near_rows[0]` and the rows `u` (or, without `t`, all rows) within
+     * `near_rows[1]` are computed (DiscreteModel::vmult_rows()).
      */
     void
-    product_of_work_vector(TrilinosWrappers::MPI::Vector &dst) const;
+    product_of_work_vector(TrilinosWrappers::MPI::Vector          &dst,
+                           const std::array<const RowRanges *, 2> &near_rows = {
+                             {nullptr, nullptr}}) const;
 
     const DiscreteModel &model;
     const bool           transpose;
@@ -118,5 +149,10 @@ namespace ltn
     std::vector<unsigned int>             free_list;
     IndexSet                              free_partition;
     mutable TrilinosWrappers::MPI::Vector v, w;
+    /**
+     * The rows within 0, 1 and 2 bonds of the degrees of freedom outside
+     * the free block and `t` (DiscreteModel::rows_near()).
+     */
+    std::vector<RowRanges> near_outside;
   };
 } // namespace ltn

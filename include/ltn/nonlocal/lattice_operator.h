@@ -134,7 +134,12 @@ namespace ltn
     vmult_rows(TrilinosWrappers::MPI::Vector       &dst,
                const TrilinosWrappers::MPI::Vector &src,
                const bool                           transpose,
-               const RowSubset                      rows) const override;
+               const RowSubset                      rows,
+               const RowRanges                     *within) const override;
+
+    std::vector<RowRanges>
+    rows_near(const TrilinosWrappers::MPI::Vector &marked,
+              const unsigned int                   layers) const override;
 
     std::size_t
     memory_consumption() const override;
@@ -171,16 +176,29 @@ namespace ltn
                std::vector<std::int64_t>    &lo,
                std::vector<std::int64_t>    &hi) const;
 
+    /** Particle numbers `[first, end)`, ascending and disjoint. */
+    using ParticleRanges = std::vector<std::pair<std::int64_t, std::int64_t>>;
+
+    /**
+     * Where the products read @p src: the owned values, then the two ranges
+     * of `edges` filled from them and the other ranks' (read_edges()), and
+     * the particle number of each one's first value.
+     */
+    std::pair<std::array<const double *, 3>, std::array<std::int64_t, 3>>
+    gather(const TrilinosWrappers::MPI::Vector &src) const;
+
     /**
      * The shared-stencil part of `M x` (or of `M^T x`) for this rank's
      * particles into the owned values @p y, at the components `[a0, a1)` of
-     * each particle only. Segment `s` reads the values of particle `i` at
+     * each particle only; with @p within, for its particles only, zero for
+     * the others. Segment `s` reads the values of particle `i` at
      * `x[source][(i - x_first[source]) n_c]`, `source = segment_source[s]`.
      */
     template <int n_c, bool transpose, int a0, int a1>
     void
     apply_stencil(const std::array<const double *, 3> &x,
                   const std::array<std::int64_t, 3>   &x_first,
+                  const ParticleRanges                *within,
                   double                              *y) const;
 
     /**
