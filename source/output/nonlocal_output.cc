@@ -52,7 +52,8 @@ namespace ltn
     fields.emplace_back("region", tags);
     AssertDimension(positions.size(), owned.n_elements());
 
-    return write_parallel_vtu(PointCloudOutput<dim>(positions, fields),
+    PointCloudOutput<dim> output(positions, fields);
+    return write_parallel_vtu(output,
                               directory,
                               name,
                               nonlocal.get_model().communicator);
@@ -101,9 +102,8 @@ namespace ltn
       {"dilatation", dilatation},
       {"broken_bond_fraction", nonlocal.owned_broken_bond_fractions()},
       {"region", tags}};
-    return write_parallel_vtu(PointCloudOutput<dim>(positions,
-                                                    scalars,
-                                                    vectors),
+    PointCloudOutput<dim> output(positions, scalars, vectors);
+    return write_parallel_vtu(output,
                               directory,
                               name,
                               nonlocal.get_model().communicator);

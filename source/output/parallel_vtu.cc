@@ -9,10 +9,10 @@ namespace ltn
 {
   template <int dim, int spacedim>
   std::string
-  write_parallel_vtu(const DataOutInterface<dim, spacedim> &data,
-                     const std::string                     &directory,
-                     const std::string                     &name,
-                     const MPI_Comm                         communicator)
+  write_parallel_vtu(DataOutInterface<dim, spacedim> &data,
+                     const std::string               &directory,
+                     const std::string               &name,
+                     const MPI_Comm                   communicator)
   {
     const std::string  record = name + ".pvtu";
     const unsigned int ranks  = Utilities::MPI::n_mpi_processes(communicator);
@@ -20,6 +20,9 @@ namespace ltn
     if (ranks == 1 && Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
       return record;
 
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = DataOutBase::VtkFlags::best_speed;
+    data.set_flags(flags);
     const auto piece = [&](const unsigned int r) {
       return name + "." + Utilities::int_to_string(r, 4) + ".vtu";
     };
@@ -41,27 +44,27 @@ namespace ltn
   }
 
   template std::string
-  write_parallel_vtu(const DataOutInterface<0, 2> &,
+  write_parallel_vtu(DataOutInterface<0, 2> &,
                      const std::string &,
                      const std::string &,
                      MPI_Comm);
   template std::string
-  write_parallel_vtu(const DataOutInterface<0, 3> &,
+  write_parallel_vtu(DataOutInterface<0, 3> &,
                      const std::string &,
                      const std::string &,
                      MPI_Comm);
   template std::string
-  write_parallel_vtu(const DataOutInterface<1, 1> &,
+  write_parallel_vtu(DataOutInterface<1, 1> &,
                      const std::string &,
                      const std::string &,
                      MPI_Comm);
   template std::string
-  write_parallel_vtu(const DataOutInterface<2, 2> &,
+  write_parallel_vtu(DataOutInterface<2, 2> &,
                      const std::string &,
                      const std::string &,
                      MPI_Comm);
   template std::string
-  write_parallel_vtu(const DataOutInterface<3, 3> &,
+  write_parallel_vtu(DataOutInterface<3, 3> &,
                      const std::string &,
                      const std::string &,
                      MPI_Comm);
