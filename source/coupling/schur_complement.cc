@@ -15,22 +15,26 @@ namespace ltn
     v          = model.new_vector();
     w          = model.new_vector();
     free       = model.new_vector();
+    // The kept degrees of freedom, free or outside (controls and fixed
+    // data), by their owned positions.
+    TrilinosWrappers::MPI::Vector outside  = model.new_vector();
+    unsigned int                  position = 0;
     for (const auto i : model.owned)
-      if (model.role(i) == DofRole::free && !model.eliminated.is_element(i))
-        {
-          free(i) = 1.;
-          free_list.push_back(model.owned.index_within_set(i));
-        }
-    free.compress(VectorOperation::insert);
+      {
+        if (!model.eliminated.is_element(i))
+          {
+            if (model.role(i) == DofRole::free)
+              {
+                free.begin()[position] = 1.;
+                free_list.push_back(position);
+              }
+            else
+              outside.begin()[position] = 1.;
+          }
+        ++position;
+      }
     free_partition = contiguous_partition(free_list.size(), model.communicator);
-    {
-      TrilinosWrappers::MPI::Vector outside = model.new_vector();
-      for (const auto i : model.owned)
-        if (model.role(i) != DofRole::free && !model.eliminated.is_element(i))
-          outside(i) = 1.;
-      outside.compress(VectorOperation::insert);
-      near_outside = model.rows_near(outside, 2);
-    }
+    near_outside   = model.rows_near(outside, 2);
     if (!eliminates)
       return;
     kept             = model.new_vector();

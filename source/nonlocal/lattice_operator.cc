@@ -1132,16 +1132,15 @@ namespace ltn
   LatticeOperator<dim>::rows_near(const TrilinosWrappers::MPI::Vector &marked,
                                   const unsigned int layers) const
   {
-    const std::int64_t n_c         = n_components;
-    const std::size_t  n_owned     = end - first;
-    const auto         any_nonzero = [n_c](const double *values) {
-      return std::any_of(values, values + n_c, [](const double value) {
-        return value != 0.;
-      });
-    };
-    std::vector<bool> in_layer(n_owned);
+    const std::int64_t n_c     = n_components;
+    const std::size_t  n_owned = end - first;
+    // Per owned particle: is it in the layer? (Bytes, not bits: the test
+    // below reads one per particle and offset.)
+    std::vector<unsigned char> in_layer(n_owned);
     for (std::size_t p = 0; p < n_owned; ++p)
-      in_layer[p] = any_nonzero(marked.begin() + n_c * p);
+      in_layer[p] = std::any_of(marked.begin() + n_c * p,
+                                marked.begin() + n_c * (p + 1),
+                                [](const double value) { return value != 0.; });
     std::vector<RowRanges>        result;
     TrilinosWrappers::MPI::Vector indicator(marked);
     for (unsigned int layer = 0;; ++layer)
@@ -1160,26 +1159,30 @@ namespace ltn
           return result;
 
         // The next layer: the particles whose bonds reach this one (the
-        // offsets are closed under negation: also those it reaches).
+        // offsets are closed under negation: also those it reaches). The
+        // layer is read, other ranks' particles included, from the first
+        // component of an indicator vector.
+        std::fill(indicator.begin(), indicator.end(), 0.);
         for (std::size_t p = 0; p < n_owned; ++p)
-          std::fill_n(indicator.begin() + n_c * p, n_c, in_layer[p] ? 1. : 0.);
-        const auto        sources   = gather(indicator);
-        std::vector<bool> next      = in_layer;
-        const std::size_t n_offsets = offsets.size();
+          indicator.begin()[n_c * p] = in_layer[p];
+        const auto                 sources   = gather(indicator);
+        std::vector<unsigned char> next      = in_layer;
+        const std::size_t          n_offsets = offsets.size();
         for (std::size_t s = 0; s + 1 < segment_start.size(); ++s)
           {
-            const double      *x       = sources.first[segment_source[s]];
-            const std::int64_t x_first = sources.second[segment_source[s]];
+            const double       *x       = sources.first[segment_source[s]];
+            const std::int64_t  x_first = sources.second[segment_source[s]];
+            const std::int64_t *origin  = &bond_origin[s * n_offsets];
+            const std::int64_t *lo      = &bond_lo[s * n_offsets];
+            const std::int64_t *hi      = &bond_hi[s * n_offsets];
             for (std::int64_t i = segment_start[s];
                  i < std::int64_t(segment_start[s + 1]);
                  ++i)
               for (std::size_t k = 0; k < n_offsets && !next[i - first]; ++k)
                 {
-                  const std::int64_t j = bond_origin[s * n_offsets + k] + i;
-                  if (j >= bond_lo[s * n_offsets + k] &&
-                      j < bond_hi[s * n_offsets + k] &&
-                      any_nonzero(x + (j - x_first) * n_c))
-                    next[i - first] = true;
+                  const std::int64_t j = origin[k] + i;
+                  if (j >= lo[k] && j < hi[k] && x[(j - x_first) * n_c] != 0.)
+                    next[i - first] = 1;
                 }
           }
         in_layer.swap(next);
