@@ -42,7 +42,7 @@ namespace ltn
      * `dst = S src` for @p src zero in the free block and at `t` (the
      * controls' and fixed data's values): only the rows within two bonds
      * of those degrees of freedom (one without `t`) are computed, the rest
-     * are zero (on the 10^6 bar of benchmarks/scaling, a fifth of the rows).
+     * are zero.
      */
     void
     vmult_from_outside(TrilinosWrappers::MPI::Vector       &dst,
