@@ -137,12 +137,9 @@ namespace ltn
         x = 0.;
         return;
       }
-    if (last && last->rhs.size() > 0)
-      {
-        const double last_norm = last->rhs.l2_norm();
-        if (last_norm > 0)
-          x.add((b * last->rhs) / (last_norm * last_norm), last->solution);
-      }
+    if (last && last->rhs_norm > 0)
+      x.add((b * last->rhs) / (last->rhs_norm * last->rhs_norm),
+            last->solution);
     // The tolerance is on the true residual (GMRES: with right
     // preconditioning), relative to the free block's right-hand side:
     // solve_free_block sets it.
@@ -164,6 +161,7 @@ namespace ltn
     if (last)
       {
         last->rhs      = b;
+        last->rhs_norm = b_norm;
         last->solution = x;
       }
   }

@@ -2,6 +2,7 @@
 #include <ltn/coupling/schur_complement.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace ltn
 {
@@ -215,20 +216,28 @@ namespace ltn
   {
     if (!eliminates)
       return b;
-    // The u-rows of M [0; D^-1 b_t]: B D^-1 b_t.
-    v = b;
-    v.scale(inverse_diagonal);
-    TrilinosWrappers::MPI::Vector g = b;
+    // The u-rows of M [0; D^-1 b_t]: B D^-1 b_t. Loops over the owned
+    // values, as in masked_product().
+    const std::size_t n       = v.locally_owned_size();
+    double            largest = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        v.begin()[i] = b.begin()[i] * inverse_diagonal.begin()[i];
+        largest      = std::max(largest, std::abs(v.begin()[i]));
+      }
     // The coupled solves' right-hand sides, loads and the mismatch's
     // gradient, are zero at the eliminated rows (the dilatations' equations
     // have no source): the product, a pass over all kept rows, is then
     // zero, and skipped.
-    if (v.linfty_norm() > 0)
-      {
-        model.vmult_rows(w, v, transpose, RowSubset::kept);
-        g -= w;
-      }
-    g.scale(kept);
+    const bool with_product =
+      Utilities::MPI::max(largest, model.communicator) > 0;
+    if (with_product)
+      model.vmult_rows(w, v, transpose, RowSubset::kept);
+    TrilinosWrappers::MPI::Vector g = b;
+    for (std::size_t i = 0; i < n; ++i)
+      g.begin()[i] =
+        (with_product ? b.begin()[i] - w.begin()[i] : b.begin()[i]) *
+        kept.begin()[i];
     return g;
   }
 
@@ -243,10 +252,10 @@ namespace ltn
     // The t-rows of M [u; 0]: C u.
     x.scale(kept);
     model.vmult_rows(w, x, transpose, RowSubset::eliminated);
-    v = b;
-    v -= w;
-    v.scale(inverse_diagonal);
-    x += v;
+    const std::size_t n = x.locally_owned_size();
+    for (std::size_t i = 0; i < n; ++i)
+      x.begin()[i] +=
+        inverse_diagonal.begin()[i] * (b.begin()[i] - w.begin()[i]);
   }
 
 

@@ -181,6 +181,8 @@ namespace ltn
     struct WarmStart
     {
       TrilinosWrappers::MPI::Vector rhs, solution;
+      /** The norm of `rhs`. */
+      double rhs_norm = 0;
     };
 
     /**
