@@ -98,7 +98,10 @@ namespace ltn
                         forward_system->memory_consumption();
         if (with_adjoint)
           {
-            adjoint_system = std::make_unique<SchurComplement>(model, true);
+            adjoint_system =
+              std::make_unique<SchurComplement>(model,
+                                                true,
+                                                forward_system.get());
             counts.memory += adjoint_system->memory_consumption();
           }
       }

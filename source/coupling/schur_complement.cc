@@ -6,8 +6,9 @@
 
 namespace ltn
 {
-  SchurComplement::SchurComplement(const DiscreteModel &model,
-                                   const bool           transpose)
+  SchurComplement::SchurComplement(const DiscreteModel   &model,
+                                   const bool             transpose,
+                                   const SchurComplement *same_model)
     : model(model)
     , transpose(transpose)
   {
@@ -35,7 +36,9 @@ namespace ltn
         ++position;
       }
     free_partition = contiguous_partition(free_list.size(), model.communicator);
-    near_outside   = model.rows_near(outside, 2);
+    // The same rows for M and M^T (the bonds are symmetric).
+    near_outside =
+      same_model ? same_model->near_outside : model.rows_near(outside, 2);
     if (!eliminates)
       return;
     kept             = model.new_vector();

@@ -72,9 +72,11 @@ namespace
     const auto   is_outside = [&](const types::global_dof_index i) {
       return model.role(i) != DofRole::free && !model.eliminated.is_element(i);
     };
+    // The adjoint one takes the forward one's rows, as ModelSolver's does.
+    const SchurComplement forward(model, false);
     for (const bool transpose : {false, true})
       {
-        const SchurComplement S(model, transpose);
+        const SchurComplement S(model, transpose, &forward);
         const auto            x       = random_vector(model, random);
         auto                  outside = x;
         for (const auto i : model.owned)

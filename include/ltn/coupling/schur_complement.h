@@ -31,7 +31,14 @@ namespace ltn
   class SchurComplement
   {
   public:
-    SchurComplement(const DiscreteModel &model, const bool transpose);
+    /**
+     * @p same_model: a Schur complement of the same model, whose rows near
+     * the controls and fixed data (vmult_from_outside()) are taken instead
+     * of found again.
+     */
+    SchurComplement(const DiscreteModel   &model,
+                    const bool             transpose,
+                    const SchurComplement *same_model = nullptr);
 
     /** `dst = S src`; the entries of @p src at `t` are ignored. */
     void
