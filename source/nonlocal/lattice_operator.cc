@@ -259,21 +259,30 @@ namespace ltn
   void
   LatticeOperator<dim>::read_edges()
   {
-    // The particles a segment's bonds reach, present or not, clipped to
-    // the reached range (an absent partner is never read).
+    // The particles a segment's bonds reach: along each offset, those of
+    // the segment's partner line, clipped to that line's particles (an
+    // absent partner is never read). Clipped to the whole reached range
+    // instead, an absent line (past the lattice's box) stretched a range to
+    // the rank's first particle, and each product copied all owned values
+    // into `edges`: 3.3 % of a run of the 10^6 bar (perf).
     const std::size_t n_offsets = offsets.size();
-    const auto        clip      = [this](const std::int64_t i) {
-      return std::clamp<std::int64_t>(i, reach_first, reach_end - 1);
-    };
-    const auto reads = [&](const std::size_t s) {
+    const auto        reads     = [&](const std::size_t s) {
       std::int64_t lowest  = segment_start[s],
                    highest = segment_start[s + 1] - 1;
       for (std::size_t k = 0; k < n_offsets; ++k)
         {
           const std::int64_t o = bond_origin[s * n_offsets + k];
-          lowest = std::min(lowest, clip(o + std::int64_t(segment_start[s])));
-          highest =
-            std::max(highest, clip(o + std::int64_t(segment_start[s + 1]) - 1));
+          const std::int64_t lo =
+            std::max<std::int64_t>(o + std::int64_t(segment_start[s]),
+                                   bond_lo[s * n_offsets + k]);
+          const std::int64_t hi =
+            std::min<std::int64_t>(o + std::int64_t(segment_start[s + 1]),
+                                   bond_hi[s * n_offsets + k]);
+          if (lo < hi)
+            {
+              lowest  = std::min(lowest, lo);
+              highest = std::max(highest, hi - 1);
+            }
         }
       return std::make_pair(lowest, highest + 1);
     };
