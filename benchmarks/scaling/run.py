@@ -6,7 +6,7 @@ usage: run.py [--ltn build/ltn] [--out DIR] [--scenes 1e4 3e4 ...]
 Runs benchmarks/scaling/lps_bar_3d_<N>.prm (the cracked tensile bar of
 parameter_files/lps_bar_3d_tensile_crack.prm with finer particle lattices;
 matrix-free LPS, reduced-space CG with AMG-preconditioned CG in the particle
-model and GMRES in the FEM model)
+model and the FEM model factorized)
 on each number of MPI ranks. Writes per run the particle and FEM sizes, the
 wall time per phase (and of the control preconditioner's setup, and of
 solving each model once alone with the same solvers, from zero, after the
@@ -15,10 +15,10 @@ coupled solve, without them, is compared with), the outer and inner iterations, 
 over ranks) and the bytes per particle to results.csv, and a log-log chart of
 solve time against particles with the fitted slope to scaling.png. With
 --reuse, runs whose summary.json exists in DIR are read, not rerun, and
-missing ones are skipped (the 10^6 scene takes most of an hour: run it once,
-as `mpirun -np 2 build/ltn benchmarks/scaling/lps_bar_3d_1e6.prm --output-dir
+missing ones are skipped (to chart a run of the 10^6 scene made apart, e.g.
+`mpirun -np 2 build/ltn benchmarks/scaling/lps_bar_3d_1e6.prm --output-dir
 benchmarks/scaling/runs/1e6_np2 --set "Coupling/Time standalone solves=true"`,
-then chart it with the others).
+about two minutes on two cores, with the others).
 """
 import argparse
 import csv
