@@ -81,8 +81,8 @@ namespace ltn
         "form, about three times the particles, is factorized once and "
         "costs one pair of triangular solves per application; needs a "
         "particle model, 2D or 3D; in 3D its factorization grows faster "
-        "than the particles: on the 3e5 bar of benchmarks/scaling it held "
-        "9.7 GB after 11 minutes, where `diagonal` solves in 24 s).");
+        "than the particles: on the 3e5 bar of benchmarks/scaling one rank "
+        "held 9.7 GB after 11 minutes, where `diagonal` solves in 24 s).");
       prm.declare_entry(
         "Time standalone solves",
         "false",
