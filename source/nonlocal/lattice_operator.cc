@@ -262,9 +262,9 @@ namespace ltn
     // The particles a segment's bonds reach: along each offset, those of
     // the segment's partner line, clipped to that line's particles (an
     // absent partner is never read). Clipped to the whole reached range
-    // instead, an absent line (past the lattice's box) stretched a range to
-    // the rank's first particle, and each product copied all owned values
-    // into `edges`: 3.3 % of a run of the 10^6 bar (perf).
+    // instead, an absent line (past the lattice's box) stretched a range
+    // over all the rank's particles, and each product copied all owned
+    // values into `edges`: 3.3 % of a run of the 10^6 bar (perf).
     const std::size_t n_offsets = offsets.size();
     const auto        reads     = [&](const std::size_t s) {
       std::int64_t lowest  = segment_start[s],
