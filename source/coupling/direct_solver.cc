@@ -95,10 +95,10 @@ namespace ltn
     Mumps(const TrilinosWrappers::SparseMatrix &matrix,
           const double                          pivot_threshold,
           const Symmetry                        symmetry)
-      : row_map(matrix.trilinos_matrix().RowMap())
+      : communicator(matrix.get_mpi_communicator())
+      , row_map(matrix.trilinos_matrix().RowMap())
     {
-      const MPI_Comm communicator = matrix.get_mpi_communicator();
-      const bool     host = Utilities::MPI::this_mpi_process(communicator) == 0;
+      const bool host = Utilities::MPI::this_mpi_process(communicator) == 0;
       const types::global_dof_index n = matrix.m();
       AssertThrow(n < (types::global_dof_index(1) << 31),
                   ExcMessage("MUMPS's 32-bit indices cannot number " +
@@ -230,8 +230,46 @@ namespace ltn
       id.nrhs      = b.NumVectors();
       id.lrhs      = std::max(stride, 1);
       icntl(id, 9) = transpose ? 0 : 1;
-      id.job       = 3;
+      // Many sparse right-hand sides (the local coarse columns: a control's
+      // unit vector moved to the free rows it couples to) are given as
+      // sparse columns: MUMPS then runs the forward elimination only along
+      // the paths of the elimination tree they touch. The solutions stay
+      // dense, in `rhs`.
+      std::vector<MUMPS_INT> column_start, entry_row;
+      std::vector<double>    entry_value;
+      int                    sparse = 0;
+      if (on_host.MyLength() > 0 && id.nrhs > 1)
+        {
+          std::size_t nonzeros = 0;
+          for (int j = 0; j < id.nrhs; ++j)
+            nonzeros += std::count_if(values_on_host + std::size_t(j) * stride,
+                                      values_on_host + std::size_t(j) * stride +
+                                        on_host.MyLength(),
+                                      [](const double v) { return v != 0.; });
+          sparse =
+            10 * nonzeros <= std::size_t(on_host.MyLength()) * id.nrhs ? 1 : 0;
+          for (int j = 0; sparse && j < id.nrhs; ++j)
+            {
+              column_start.push_back(entry_row.size() + 1);
+              const double *column = values_on_host + std::size_t(j) * stride;
+              for (int i = 0; i < on_host.MyLength(); ++i)
+                if (column[i] != 0.)
+                  {
+                    entry_row.push_back(i + 1);
+                    entry_value.push_back(column[i]);
+                  }
+            }
+          column_start.push_back(entry_row.size() + 1);
+        }
+      MPI_Bcast(&sparse, 1, MPI_INT, 0, communicator);
+      icntl(id, 20)  = sparse;
+      id.nz_rhs      = static_cast<MUMPS_INT>(entry_row.size());
+      id.irhs_ptr    = column_start.data();
+      id.irhs_sparse = entry_row.data();
+      id.rhs_sparse  = entry_value.data();
+      id.job         = 3;
       dmumps_c(&id);
+      icntl(id, 20) = 0;
       AssertThrow(infog(id, 1) >= 0,
                   ExcMessage("the direct solve failed: " + mumps_error(id)));
       AssertThrow(b.Export(on_host, *to_host, Insert) == 0,
@@ -273,7 +311,8 @@ namespace ltn
       }
     };
 
-    Instance instance;
+    Instance       instance;
+    const MPI_Comm communicator;
     /** A copy (Epetra's maps share their data): the matrix may go. */
     const Epetra_BlockMap          row_map;
     std::unique_ptr<Epetra_Map>    host_map;
