@@ -230,11 +230,11 @@ namespace ltn
       id.nrhs      = b.NumVectors();
       id.lrhs      = std::max(stride, 1);
       icntl(id, 9) = transpose ? 0 : 1;
-      // Many sparse right-hand sides (the local coarse columns: a control's
-      // unit vector moved to the free rows it couples to) are given as
-      // sparse columns: MUMPS then runs the forward elimination only along
-      // the paths of the elimination tree they touch. The solutions stay
-      // dense, in `rhs`.
+      // Many sparse right-hand sides (at most a tenth of their entries
+      // nonzero, as the local coarse columns: a control's unit vector moved
+      // to the free rows it couples to) are given as sparse columns: MUMPS
+      // then runs the forward elimination only along the paths of the
+      // elimination tree they touch. The solutions stay dense, in `rhs`.
       std::vector<MUMPS_INT> column_start, entry_row;
       std::vector<double>    entry_value;
       int                    sparse = 0;
@@ -248,18 +248,22 @@ namespace ltn
                                       [](const double v) { return v != 0.; });
           sparse =
             10 * nonzeros <= std::size_t(on_host.MyLength()) * id.nrhs ? 1 : 0;
-          for (int j = 0; sparse && j < id.nrhs; ++j)
+          if (sparse)
             {
+              for (int j = 0; j < id.nrhs; ++j)
+                {
+                  column_start.push_back(entry_row.size() + 1);
+                  const double *column =
+                    values_on_host + std::size_t(j) * stride;
+                  for (int i = 0; i < on_host.MyLength(); ++i)
+                    if (column[i] != 0.)
+                      {
+                        entry_row.push_back(i + 1);
+                        entry_value.push_back(column[i]);
+                      }
+                }
               column_start.push_back(entry_row.size() + 1);
-              const double *column = values_on_host + std::size_t(j) * stride;
-              for (int i = 0; i < on_host.MyLength(); ++i)
-                if (column[i] != 0.)
-                  {
-                    entry_row.push_back(i + 1);
-                    entry_value.push_back(column[i]);
-                  }
             }
-          column_start.push_back(entry_row.size() + 1);
         }
       MPI_Bcast(&sparse, 1, MPI_INT, 0, communicator);
       icntl(id, 20)  = sparse;
@@ -270,6 +274,8 @@ namespace ltn
       id.job         = 3;
       dmumps_c(&id);
       icntl(id, 20) = 0;
+      id.irhs_ptr = id.irhs_sparse = nullptr;
+      id.rhs_sparse                = nullptr;
       AssertThrow(infog(id, 1) >= 0,
                   ExcMessage("the direct solve failed: " + mumps_error(id)));
       AssertThrow(b.Export(on_host, *to_host, Insert) == 0,
