@@ -58,7 +58,6 @@ namespace ltn
       {
         inverse_diagonal(i) = 1. / w(i);
         eliminated_positions.push_back(model.owned.index_within_set(i));
-        eliminated_inverse_diagonal.push_back(inverse_diagonal(i));
       }
     inverse_diagonal.compress(VectorOperation::insert);
   }
@@ -210,9 +209,8 @@ namespace ltn
     model.vmult_rows(w, v, transpose, RowSubset::eliminated, near_rows[0]);
     // Over the t alone: a pass over all entries took 3 % of a run of the
     // 3e5 bar of benchmarks/scaling (two ranks, `perf`).
-    for (std::size_t e = 0; e < eliminated_positions.size(); ++e)
-      v.begin()[eliminated_positions[e]] -=
-        eliminated_inverse_diagonal[e] * w.begin()[eliminated_positions[e]];
+    for (const unsigned int i : eliminated_positions)
+      v.begin()[i] -= inverse_diagonal.begin()[i] * w.begin()[i];
     // The u-rows of M v: A u - B D^-1 C u (into w too, if dst is w: its
     // t-rows are used by then).
     model.vmult_rows(dst, v, transpose, RowSubset::kept, near_rows[1]);
@@ -277,8 +275,7 @@ namespace ltn
       ranges += rows.size();
     return (eliminates ? 5 : 3) * free.memory_consumption() +
            free_list.size() * sizeof(unsigned int) +
-           eliminated_positions.size() *
-             (sizeof(unsigned int) + sizeof(double)) +
+           eliminated_positions.size() * sizeof(unsigned int) +
            ranges * sizeof(RowRanges::value_type);
   }
 } // namespace ltn

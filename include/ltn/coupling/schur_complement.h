@@ -149,11 +149,10 @@ namespace ltn
     /** `1 / D` at `t`, 0 elsewhere. */
     TrilinosWrappers::MPI::Vector inverse_diagonal;
     /**
-     * This rank's `t`: their owned positions and `1 / D` there, for the
-     * update of `t` in each product, which then passes over them alone.
+     * The owned positions of this rank's `t`, for the update of `t` in each
+     * product, which then passes over them alone.
      */
     std::vector<unsigned int> eliminated_positions;
-    std::vector<double>       eliminated_inverse_diagonal;
     /** 1 at `u`, 0 at `t`. */
     TrilinosWrappers::MPI::Vector kept;
     /** 1 at the free degrees of freedom in `u`, 0 elsewhere. */
