@@ -9,14 +9,6 @@
 
 namespace ltn
 {
-  NormalEquations::States
-  NormalEquations::forward_controls(const BlockVectorType &x) const
-  {
-    return {{forward(0, x.block(0), nullptr), forward(1, x.block(1), nullptr)}};
-  }
-
-
-
   NormalEquations::BlockVectorType
   NormalEquations::gradient(const Observation &d) const
   {
@@ -136,7 +128,19 @@ namespace ltn
             for (const VectorType &state : panel_states)
               panel.insert(panel.end(), state.begin(), state.end());
           }
-        model.gradient_row.assign(model.local_size, false);
+        if (!model.columns.empty())
+          {
+            const VectorType observed = equations.observed_unknowns(k);
+            for (std::size_t i = 0; i < model.local_size; ++i)
+              if (observed.begin()[i] != 0)
+                model.observed_rows.push_back(i);
+            model.pack_observed_rows();
+          }
+        // Independent columns (Gram-Schmidt drops dependent ones) as many
+        // as the model's controls span them all.
+        model.spans_controls =
+          !model.columns.empty() &&
+          model.columns.size() == Z[model.columns[0]].controls.size();
       }
     form_coarse_matrix();
   }
@@ -243,24 +247,9 @@ namespace ltn
                                      const unsigned int   n_columns,
                                      std::vector<double> &y) const
   {
-    const ModelStates &model = states[k];
-    const std::size_t  size  = model.local_size;
-    // The rows where a column of g is nonzero, and whether the packed panels
-    // hold them all.
-    bool covered = true;
-    for (std::size_t i = 0; i < size; ++i)
-      if (!model.gradient_row[i])
-        for (unsigned int c = 0; c < n_columns; ++c)
-          if (g[c * size + i] != 0.)
-            {
-              model.gradient_row[i] = true;
-              covered               = false;
-              break;
-            }
-    if (!covered)
-      model.pack_gradient_rows();
-
-    const std::vector<std::size_t> &rows = model.gradient_rows;
+    const ModelStates              &model = states[k];
+    const std::size_t               size  = model.local_size;
+    const std::vector<std::size_t> &rows  = model.observed_rows;
     std::vector<double>             packed_g(rows.size() * n_columns);
     for (unsigned int c = 0; c < n_columns; ++c)
       for (std::size_t r = 0; r < rows.size(); ++r)
@@ -279,21 +268,17 @@ namespace ltn
 
 
   void
-  DeflationSpace::ModelStates::pack_gradient_rows() const
+  DeflationSpace::ModelStates::pack_observed_rows()
   {
-    gradient_rows.clear();
-    for (std::size_t i = 0; i < local_size; ++i)
-      if (gradient_row[i])
-        gradient_rows.push_back(i);
     packed_panels.resize(panels.size());
     for (unsigned int p = 0; p < panels.size(); ++p)
       {
         const std::size_t width = panels[p].size() / local_size;
-        packed_panels[p].resize(gradient_rows.size() * width);
+        packed_panels[p].resize(observed_rows.size() * width);
         for (std::size_t c = 0; c < width; ++c)
-          for (std::size_t r = 0; r < gradient_rows.size(); ++r)
-            packed_panels[p][c * gradient_rows.size() + r] =
-              panels[p][c * local_size + gradient_rows[r]];
+          for (std::size_t r = 0; r < observed_rows.size(); ++r)
+            packed_panels[p][c * observed_rows.size() + r] =
+              panels[p][c * local_size + observed_rows[r]];
       }
   }
 
@@ -335,54 +320,107 @@ namespace ltn
 
 
 
+  namespace
+  {
+    /**
+     * `y = sum_p panels[p] c_p`, `c_p` the entries of @p c at the panels'
+     * columns (`panel_width` each) among @p columns: `rows` rows each.
+     */
+    void
+    combine_panels(const std::vector<std::vector<double>> &panels,
+                   const std::size_t                       rows,
+                   const unsigned int                      panel_width,
+                   const std::vector<unsigned int>        &columns,
+                   const Vector<double>                   &c,
+                   double                                 *y)
+    {
+      const types::blas_int n_rows = rows, one_step = 1;
+      for (unsigned int p = 0; p < panels.size() && n_rows > 0; ++p)
+        {
+          std::vector<double> c_p;
+          for (std::size_t a = p * panel_width;
+               a < std::min<std::size_t>((p + 1) * panel_width, columns.size());
+               ++a)
+            c_p.push_back(c(columns[a]));
+          const types::blas_int n_columns = c_p.size();
+          const double          one = 1., beta = (p == 0 ? 0. : 1.);
+          gemv("N",
+               &n_rows,
+               &n_columns,
+               &one,
+               panels[p].data(),
+               &n_rows,
+               c_p.data(),
+               &one_step,
+               &beta,
+               y,
+               &one_step);
+        }
+    }
+  } // namespace
+
+
+
   void
-  DeflationSpace::add(const Vector<double>    &c,
-                      BlockVectorType         &v,
-                      Observation             &observed,
-                      NormalEquations::States *added_to) const
+  DeflationSpace::add(const Vector<double> &c,
+                      BlockVectorType      &v,
+                      Observation          &observed) const
   {
     if (Z.empty())
       return;
     for (std::size_t j = 0; j < Z.size(); ++j)
       v.block(Z[j].model).add(c(j), Z[j].controls);
-    // The combined state V_k Z_k c_k of each model with columns.
+    // The combined state V_k Z_k c_k of each model with columns, at the
+    // unknowns the observation reads (zero elsewhere).
     NormalEquations::States combined;
     for (const unsigned int k : {0u, 1u})
       if (!states[k].columns.empty())
         {
-          combined[k]                 = equations.new_state(k);
-          const ModelStates    &model = states[k];
-          const types::blas_int rows = model.local_size, one_step = 1;
-          for (unsigned int p = 0; p < model.panels.size() && rows > 0; ++p)
-            {
-              std::vector<double> c_p;
-              for (std::size_t a = p * model.panel_width;
-                   a < std::min<std::size_t>((p + 1) * model.panel_width,
-                                             model.columns.size());
-                   ++a)
-                c_p.push_back(c(model.columns[a]));
-              const types::blas_int columns = c_p.size();
-              const double          one = 1., beta = (p == 0 ? 0. : 1.);
-              gemv("N",
-                   &rows,
-                   &columns,
-                   &one,
-                   model.panels[p].data(),
-                   &rows,
-                   c_p.data(),
-                   &one_step,
-                   &beta,
-                   combined[k].begin(),
-                   &one_step);
-            }
+          const ModelStates  &model = states[k];
+          std::vector<double> at_rows(model.observed_rows.size());
+          combine_panels(model.packed_panels,
+                         at_rows.size(),
+                         model.panel_width,
+                         model.columns,
+                         c,
+                         at_rows.data());
+          combined[k] = equations.new_state(k);
+          for (std::size_t r = 0; r < at_rows.size(); ++r)
+            combined[k].begin()[model.observed_rows[r]] = at_rows[r];
         }
     const Observation added = equations.observe(combined);
     for (std::size_t q = 0; q < observed.size(); ++q)
       observed[q] += added[q];
-    if (added_to)
-      for (const unsigned int k : {0u, 1u})
-        if (combined[k].size() > 0)
-          (*added_to)[k] += combined[k];
+  }
+
+
+
+  void
+  DeflationSpace::add_states(const Vector<double>    &c,
+                             NormalEquations::States &added_to) const
+  {
+    for (const unsigned int k : {0u, 1u})
+      if (!states[k].columns.empty())
+        {
+          const ModelStates  &model = states[k];
+          std::vector<double> combined(model.local_size);
+          combine_panels(model.panels,
+                         model.local_size,
+                         model.panel_width,
+                         model.columns,
+                         c,
+                         combined.data());
+          for (std::size_t i = 0; i < combined.size(); ++i)
+            added_to[k].begin()[i] += combined[i];
+        }
+  }
+
+
+
+  bool
+  DeflationSpace::spans(const unsigned int k) const
+  {
+    return states[k].spans_controls;
   }
 
 
@@ -426,26 +464,49 @@ namespace ltn
       return Av;
     };
 
+    // Where the columns span a model's controls (every local control is a
+    // column of the reduced space's coarse space), the residual, orthogonal
+    // to Z, is zero there; it is set so exactly, and so is the
+    // preconditioned residual: the directions' parts there are coarse
+    // corrections alone, and the iterations need no forward solve of that
+    // model.
+    const auto zero_spanned = [&](BlockVectorType &v) {
+      for (const unsigned int k : {0u, 1u})
+        if (coarse.spans(k))
+          v.block(k) = 0.;
+    };
+
     // Start from the coarse solution x = Z E^{-1} Z^T b, so that the
     // residual is orthogonal to Z. With b = -F^T W d, Z^T b = -(F Z)^T W d
     // needs no adjoint solve, and r = b - A x = -(F^T W (d + F x) + alpha x)
     // only one: b itself is never formed.
+    //
+    // The states V x, where they are wanted, are tracked as V y + V Z c_x
+    // with the coarse coefficients c_x apart (and V p as V y_p + V Z c_p),
+    // so that V Z is combined once, at the end, not in every iteration.
+    const unsigned int m = coarse.size();
+    Vector<double>     coarse_x(m), coarse_p(m);
+    const auto         finish = [&]() {
+      if (states)
+        coarse.add_states(coarse_x, *states);
+    };
     x                      = 0.;
     Observation observed_x = equations.observe(NormalEquations::States());
-    if (coarse.size() > 0)
+    if (m > 0)
       {
-        Vector<double> c = coarse.solve_product(x, data);
-        c *= -1.;
-        coarse.add(c, x, observed_x, states);
+        coarse_x = coarse.solve_product(x, data);
+        coarse_x *= -1.;
+        coarse.add(coarse_x, x, observed_x);
       }
     for (std::size_t q = 0; q < observed_x.size(); ++q)
       observed_x[q] += data[q];
     BlockVectorType r = product(x, observed_x);
     r *= -1.;
+    zero_spanned(r);
     double       residual = r.l2_norm();
     unsigned int step     = 0;
     if (control.check(step, residual) == SolverControl::success)
-      return;
+      return finish();
 
     // The direction p = z - Z E^{-1} Z^T A z is A-orthogonal to Z; its
     // observation F p, and its states V p where they are wanted, follow from
@@ -455,8 +516,12 @@ namespace ltn
     const auto              preconditioned_residual = [&]() {
       before_products(residual);
       precondition(z, r);
-      NormalEquations::States u = equations.forward_controls(z);
-      const Observation       observed = equations.observe(u);
+      zero_spanned(z);
+      NormalEquations::States u;
+      for (const unsigned int k : {0u, 1u})
+        u[k] = coarse.spans(k) ? equations.new_state(k) :
+                                              equations.forward(k, z.block(k), nullptr);
+      const Observation observed = equations.observe(u);
       if (states)
         states_z = std::move(u); // kept only to form V p
       return observed;
@@ -469,7 +534,8 @@ namespace ltn
     NormalEquations::States states_p;
     if (states)
       states_p = std::move(states_z); // formed anew in each iteration
-    coarse.add(c, p, observed_p, states ? &states_p : nullptr);
+    coarse.add(c, p, observed_p);
+    coarse_p  = c;
     double rz = r * z;
 
     while (true)
@@ -481,13 +547,17 @@ namespace ltn
         const double step_length = rz / pq;
         x.add(step_length, p);
         if (states)
-          for (const unsigned int k : {0u, 1u})
-            (*states)[k].add(step_length, states_p[k]);
+          {
+            for (const unsigned int k : {0u, 1u})
+              (*states)[k].add(step_length, states_p[k]);
+            coarse_x.add(step_length, coarse_p);
+          }
         r.add(-step_length, q);
+        zero_spanned(r);
         residual                         = r.l2_norm();
         const SolverControl::State state = control.check(++step, residual);
         if (state == SolverControl::success)
-          return;
+          return finish();
         if (state == SolverControl::failure)
           throw SolverControl::NoConvergence(step, residual);
 
@@ -503,7 +573,8 @@ namespace ltn
         if (states)
           for (const unsigned int k : {0u, 1u})
             states_p[k].sadd(beta, 1., states_z[k]);
-        coarse.add(c, p, observed_p, states ? &states_p : nullptr);
+        coarse.add(c, p, observed_p);
+        coarse_p.sadd(beta, 1., c);
       }
   }
 } // namespace ltn

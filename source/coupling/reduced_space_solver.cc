@@ -138,6 +138,7 @@ namespace ltn
             return g;
           },
           [&](const unsigned int k) { return system.models[k]->new_vector(); },
+          [&](const unsigned int k) { return system.observation_counts(k); },
           system.alpha,
           [&](const unsigned int k, const std::vector<VectorType> &controls) {
             return hessian.solvers[k]->forward(controls);

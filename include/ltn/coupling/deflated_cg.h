@@ -44,6 +44,11 @@ namespace ltn
     std::function<BlockVectorType(const States &)> adjoint;
     /** A zero state of model k. */
     std::function<VectorType(unsigned int k)> new_state;
+    /**
+     * Nonzero exactly at the unknowns of model k that @p observe reads and
+     * @p observe_transpose writes (for any rank's points).
+     */
+    std::function<VectorType(unsigned int k)> observed_unknowns;
     double                                    alpha;
     /**
      * Optional: the states of several controls of model k at once, as
@@ -62,10 +67,6 @@ namespace ltn
      */
     std::array<std::function<VectorType(const VectorType &)>, 2> observe_alone =
       {};
-
-    /** `V x`: the forward solves of both models. */
-    States
-    forward_controls(const BlockVectorType &x) const;
 
     /** `F^T W d`: the adjoint solves of the observed residual @p d. */
     BlockVectorType
@@ -118,14 +119,24 @@ namespace ltn
     solve_product(const BlockVectorType &v, const Observation &observed) const;
 
     /**
-     * `v += Z c` and `observed += B (V Z) c`; if @p added_to is given, also
-     * `added_to += V Z c`, per model with columns.
+     * `v += Z c` and `observed += B (V Z) c`. The combined state `V Z c` is
+     * formed at the observed unknowns alone.
      */
     void
-    add(const Vector<double>    &c,
-        BlockVectorType         &v,
-        Observation             &observed,
-        NormalEquations::States *added_to = nullptr) const;
+    add(const Vector<double> &c,
+        BlockVectorType      &v,
+        Observation          &observed) const;
+
+    /** `states += V Z c`, per model with columns. */
+    void
+    add_states(const Vector<double> &c, NormalEquations::States &states) const;
+
+    /**
+     * Do the columns span all of model @p k's controls? Then a vector
+     * orthogonal to `Z`, as the deflated CG's residuals are, is zero there.
+     */
+    bool
+    spans(const unsigned int k) const;
 
     /** The number of columns. */
     unsigned int
@@ -153,22 +164,20 @@ namespace ltn
       state(const unsigned int a) const;
 
       /**
-       * A gradient `B^T W d` is nonzero only at the unknowns of the
-       * overlap's points (of their cells, for the FEM model), a tenth of
-       * the FEM model's unknowns on the cracked plate: the products with
-       * the states are taken over these rows alone, from copies of the
-       * panels restricted to them. The rows are those where a gradient has
-       * been nonzero so far (`gradient_row`), grown, and the copies made
-       * again, when one is nonzero elsewhere, so the products are exact
-       * for any gradient.
+       * A gradient `B^T W d` is nonzero only at the observed unknowns (those
+       * of the overlap's points, of their cells for the FEM model), a tenth
+       * of the FEM model's unknowns on the cracked plate, and an observation
+       * reads only them: the products with the states are taken over these
+       * rows alone, from copies of the panels restricted to them.
        */
-      mutable std::vector<bool>                gradient_row;
-      mutable std::vector<std::size_t>         gradient_rows;
-      mutable std::vector<std::vector<double>> packed_panels;
+      std::vector<std::size_t>         observed_rows;
+      std::vector<std::vector<double>> packed_panels;
+      /** Do the model's columns span all its controls? */
+      bool spans_controls = false;
 
-      /** Set `gradient_rows` from `gradient_row` and pack the panels. */
+      /** Pack the panels' observed rows. */
       void
-      pack_gradient_rows() const;
+      pack_observed_rows();
     };
 
     /** Form `E` and factor it. */
