@@ -276,7 +276,8 @@ namespace ltn
   TrilinosWrappers::MPI::Vector
   ModelSolver::forward(const TrilinosWrappers::MPI::Vector &theta,
                        const bool                           with_data,
-                       const TrilinosWrappers::MPI::Vector *initial_guess) const
+                       const TrilinosWrappers::MPI::Vector *initial_guess,
+                       const bool with_eliminated) const
   {
     // The control rows of `r` are zero.
     TrilinosWrappers::MPI::Vector rhs = extend_controls(theta);
@@ -286,11 +287,12 @@ namespace ltn
     if (initial_guess)
       {
         TrilinosWrappers::MPI::Vector field = *initial_guess;
-        solve(false, field, rhs, nullptr);
+        solve(false, field, rhs, nullptr, with_eliminated);
         return field;
       }
     TrilinosWrappers::MPI::Vector field = model.new_vector();
-    solve(false, field, rhs, with_data ? nullptr : &last_forward);
+    solve(
+      false, field, rhs, with_data ? nullptr : &last_forward, with_eliminated);
     return field;
   }
 
