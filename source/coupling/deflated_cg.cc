@@ -201,14 +201,24 @@ namespace ltn
                 with_gradient.push_back(j);
             if (with_gradient.empty() || states[l].columns.empty())
               continue;
-            std::vector<double> y(states[l].columns.size() *
-                                    with_gradient.size(),
-                                  0.);
-            add_state_products(l, gradients[l].data(), with_gradient.size(), y);
+            // E is symmetric: within model l only the states from the
+            // block's first column on are multiplied, which holds the lower
+            // triangle (about half the products where l has many columns).
+            const bool         own_model = std::all_of(with_gradient.begin(),
+                                               with_gradient.end(),
+                                               [&](const unsigned int j) {
+                                                 return Z[j].model == l;
+                                               });
+            const unsigned int first_state =
+              own_model ? column_in_model[with_gradient[0]] : 0;
+            const std::size_t   n_states = states[l].columns.size();
+            std::vector<double> y(n_states * with_gradient.size(), 0.);
+            add_state_products(
+              l, gradients[l].data(), with_gradient.size(), y, first_state);
             for (std::size_t b = 0; b < with_gradient.size(); ++b)
-              for (std::size_t a = 0; a < states[l].columns.size(); ++a)
+              for (std::size_t a = first_state; a < n_states; ++a)
                 E[std::size_t(with_gradient[b]) * m + states[l].columns[a]] =
-                  y[b * states[l].columns.size() + a];
+                  y[b * n_states + a];
           }
       }
     Utilities::MPI::sum(E, communicator, E);
@@ -217,16 +227,12 @@ namespace ltn
     for (unsigned int j = 0; j < m; ++j)
       for (unsigned int i = 0; i < m; ++i)
         {
-          // E is stored by columns j, its entries (i, j) for model(i) >=
-          // model(j).
-          const auto entry = [&](const unsigned int row,
-                                 const unsigned int col) {
-            return Z[row].model >= Z[col].model ?
-                     E[std::size_t(col) * m + row] :
-                     E[std::size_t(row) * m + col];
-          };
-          // Symmetric but for round-off.
-          coarse_matrix(i, j) = 0.5 * (entry(i, j) + entry(j, i));
+          // E is stored by columns j, its entries (i, j) for model(i) >
+          // model(j), and for model(i) = model(j) where i >= j.
+          const bool lower =
+            Z[i].model > Z[j].model || (Z[i].model == Z[j].model && i >= j);
+          coarse_matrix(i, j) =
+            lower ? E[std::size_t(j) * m + i] : E[std::size_t(i) * m + j];
         }
     if (equations.alpha != 0)
       for (unsigned int j = 0; j < m; ++j)
@@ -245,24 +251,37 @@ namespace ltn
   DeflationSpace::add_state_products(const unsigned int   k,
                                      const double        *g,
                                      const unsigned int   n_columns,
-                                     std::vector<double> &y) const
+                                     std::vector<double> &y,
+                                     const unsigned int   first_state) const
   {
     const ModelStates              &model = states[k];
     const std::size_t               size  = model.local_size;
     const std::vector<std::size_t> &rows  = model.observed_rows;
-    std::vector<double>             packed_g(rows.size() * n_columns);
+    if (rows.empty())
+      return;
+    std::vector<double> packed_g(rows.size() * n_columns);
     for (unsigned int c = 0; c < n_columns; ++c)
       for (std::size_t r = 0; r < rows.size(); ++r)
         packed_g[c * rows.size() + r] = g[c * size + rows[r]];
-    for (unsigned int p = 0; p < model.packed_panels.size(); ++p)
-      add_transposed_product(rows.size(),
-                             model.packed_panels[p].size() /
-                               std::max<std::size_t>(1, rows.size()),
-                             n_columns,
-                             model.packed_panels[p].data(),
-                             packed_g.data(),
-                             y.data() + p * model.panel_width,
-                             model.columns.size());
+    for (unsigned int p = first_state / model.panel_width;
+         p < model.packed_panels.size();
+         ++p)
+      {
+        // The panel's states from first_state on.
+        const unsigned int first_column = p * model.panel_width;
+        const unsigned int skipped =
+          first_state > first_column ? first_state - first_column : 0;
+        const unsigned int width =
+          model.packed_panels[p].size() / rows.size() - skipped;
+        add_transposed_product(rows.size(),
+                               width,
+                               n_columns,
+                               model.packed_panels[p].data() +
+                                 std::size_t(skipped) * rows.size(),
+                               packed_g.data(),
+                               y.data() + first_column + skipped,
+                               model.columns.size());
+      }
   }
 
 

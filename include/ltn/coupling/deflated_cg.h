@@ -187,13 +187,16 @@ namespace ltn
     /**
      * `y += (V_k Z_k)^T g` at model @p k's columns, over this rank's entries
      * of its gradients @p g (`local_size` rows, @p n_columns columns,
-     * column-major): `y` is `m x n_columns`, column-major.
+     * column-major): `y` is `m x n_columns`, column-major, with `m` the
+     * model's columns. Only the rows of `y` from @p first_state on are
+     * formed.
      */
     void
     add_state_products(const unsigned int   k,
                        const double        *g,
                        const unsigned int   n_columns,
-                       std::vector<double> &y) const;
+                       std::vector<double> &y,
+                       const unsigned int   first_state = 0) const;
 
     /** `E^{-1} y` in place. */
     void
