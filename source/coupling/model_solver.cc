@@ -276,8 +276,7 @@ namespace ltn
   TrilinosWrappers::MPI::Vector
   ModelSolver::forward(const TrilinosWrappers::MPI::Vector &theta,
                        const bool                           with_data,
-                       const TrilinosWrappers::MPI::Vector *initial_guess,
-                       const bool with_eliminated) const
+                       const TrilinosWrappers::MPI::Vector *initial_guess) const
   {
     // The control rows of `r` are zero.
     TrilinosWrappers::MPI::Vector rhs = extend_controls(theta);
@@ -287,12 +286,11 @@ namespace ltn
     if (initial_guess)
       {
         TrilinosWrappers::MPI::Vector field = *initial_guess;
-        solve(false, field, rhs, nullptr, with_eliminated);
+        solve(false, field, rhs, nullptr);
         return field;
       }
     TrilinosWrappers::MPI::Vector field = model.new_vector();
-    solve(
-      false, field, rhs, with_data ? nullptr : &last_forward, with_eliminated);
+    solve(false, field, rhs, with_data ? nullptr : &last_forward);
     return field;
   }
 

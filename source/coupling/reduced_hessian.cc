@@ -45,10 +45,8 @@ namespace ltn
   ReducedHessian<dim>::mismatch(const BlockVectorType &theta,
                                 const bool             with_data) const
   {
-    // Only observed: the eliminated entries are not wanted.
-    return system.mismatch(
-      solvers[0]->forward(theta.block(0), with_data, nullptr, false),
-      solvers[1]->forward(theta.block(1), with_data, nullptr, false));
+    return system.mismatch(solvers[0]->forward(theta.block(0), with_data),
+                           solvers[1]->forward(theta.block(1), with_data));
   }
 
 

@@ -122,12 +122,7 @@ namespace ltn
           [&](const unsigned int k,
               const VectorType  &theta_k,
               const VectorType  *initial_state) {
-            // The states are observed (and summed into the final solves'
-            // start): the eliminated entries are not wanted.
-            return hessian.solvers[k]->forward(theta_k,
-                                               false,
-                                               initial_state,
-                                               false);
+            return hessian.solvers[k]->forward(theta_k, false, initial_state);
           },
           [&](const NormalEquations::States &u) {
             return system.mismatch(u[0], u[1]);

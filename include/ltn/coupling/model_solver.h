@@ -121,17 +121,12 @@ namespace ltn
      * and fixed data enter, otherwise they are taken as zero (the linear part
      * of the control-to-state map). The iterative solver starts from
      * @p initial_guess if given (its values at the controls and the fixed
-     * data are replaced), else from the warm start. Without
-     * @p with_eliminated it leaves the eliminated entries (LPS's
-     * dilatations) zero: the overlap's mismatch reads only the field's
-     * components, and a field only observed needs no pass over the
-     * eliminated rows.
+     * data are replaced), else from the warm start.
      */
     TrilinosWrappers::MPI::Vector
     forward(const TrilinosWrappers::MPI::Vector &theta,
             const bool                           with_data,
-            const TrilinosWrappers::MPI::Vector *initial_guess   = nullptr,
-            const bool                           with_eliminated = true) const;
+            const TrilinosWrappers::MPI::Vector *initial_guess = nullptr) const;
 
     /**
      * forward() without data for each of @p thetas: a factorized model
