@@ -51,12 +51,6 @@ namespace ltn
            C,
            &leading_C);
     }
-
-    /**
-     * The bytes of a panel of states, and of the gradients a block of
-     * columns of `E` is formed from.
-     */
-    constexpr std::size_t block_bytes = std::size_t(16) << 20;
   } // namespace
 
 
@@ -71,10 +65,12 @@ namespace ltn
 
 
   DeflationSpace::DeflationSpace(std::vector<Column>    Z_,
-                                 const NormalEquations &equations)
+                                 const NormalEquations &equations,
+                                 const std::size_t      block_bytes)
     : equations(equations)
     , communicator(equations.new_state(0).get_mpi_communicator())
     , Z(std::move(Z_))
+    , block_bytes(block_bytes)
   {
     for (const unsigned int k : {0u, 1u})
       {

@@ -314,12 +314,34 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
         }
       CHECK(error < 1e-10 * norm);
       const unsigned int iterations = control.last_step();
+
       CHECK(counted.n_adjoint == iterations + 1);
       CHECK(counted.n_forward[0] == 3 + iterations);
       // Block 1's unit columns span it: the residual is zero there, and the
       // directions' parts there are coarse corrections alone.
       CHECK(counted.n_forward[1] == block_sizes[1]);
       CHECK(callbacks == iterations);
+
+      // Panels and blocks of gradients of a few columns each (the scenes'
+      // 16 MB hold all of this test's): E formed block by block from its
+      // lower triangle, the panels entered at a column inside them.
+      {
+        const DeflationSpace small_blocks(deflation_columns(),
+                                          counted.equations,
+                                          2048);
+        BlockVectorType      x_small = new_vector();
+        SolverControl        small_control(100, 1e-12 * b.l2_norm());
+        solve_deflated_cg(counted.equations,
+                          small_blocks,
+                          jacobi,
+                          d,
+                          x_small,
+                          small_control,
+                          [](double) {});
+        CHECK(small_control.last_step() == iterations);
+        x_small -= x;
+        CHECK(x_small.l2_norm() < 1e-12 * x.l2_norm());
+      }
 
       // CG with the balancing preconditioner, from the same start Z E^{-1}
       // Z^T b (Z^T b = -(F Z)^T W d): A Z costs a product with F^T W per

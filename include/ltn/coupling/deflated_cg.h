@@ -104,7 +104,13 @@ namespace ltn
       VectorType   state_guess = {};
     };
 
-    DeflationSpace(std::vector<Column> Z, const NormalEquations &equations);
+    /**
+     * @p block_bytes bounds a panel of states and a block of the gradients
+     * `E` is formed from (a few MB: never all of a model's states at once).
+     */
+    DeflationSpace(std::vector<Column>    Z,
+                   const NormalEquations &equations,
+                   std::size_t            block_bytes = std::size_t(16) << 20);
 
     /** Not copyable: a copied LAPACKFullMatrix forgets its factorization. */
     DeflationSpace(const DeflationSpace &) = delete;
@@ -212,6 +218,7 @@ namespace ltn
     std::vector<Column>        Z;
     std::array<ModelStates, 2> states;
     LAPACKFullMatrix<double>   coarse_matrix;
+    const std::size_t          block_bytes;
   };
 
   /**
