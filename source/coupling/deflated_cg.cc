@@ -132,8 +132,9 @@ namespace ltn
                 model.observed_rows.push_back(i);
             model.pack_observed_rows();
           }
-        // Independent columns (Gram-Schmidt drops dependent ones) as many
-        // as the model's controls span them all.
+        // As many columns as the model has controls span them all: the
+        // columns are independent (Gram-Schmidt drops dependent ones, unit
+        // columns are distinct).
         model.spans_controls =
           !model.columns.empty() &&
           model.columns.size() == Z[model.columns[0]].controls.size();
@@ -534,8 +535,10 @@ namespace ltn
       zero_spanned(z);
       NormalEquations::States u;
       for (const unsigned int k : {0u, 1u})
-        u[k] = coarse.spans(k) ? equations.new_state(k) :
-                                              equations.forward(k, z.block(k), nullptr);
+        if (coarse.spans(k))
+          u[k] = equations.new_state(k); // z is zero there
+        else
+          u[k] = equations.forward(k, z.block(k), nullptr);
       const Observation observed = equations.observe(u);
       if (states)
         states_z = std::move(u); // kept only to form V p
