@@ -6,6 +6,8 @@
 // 1e-8 relative on patch and convergence scenes, at every level, for diffusion
 // and LPS, in 2D and 3D.
 
+#include <algorithm>
+
 #include "scene_run.h"
 
 namespace
@@ -146,6 +148,19 @@ TEST_CASE("the reduced-space CG's final solves start from the states it "
       CHECK(2 * final.iterations[ltn::nonlocal_model] <
             standalone.iterations[ltn::nonlocal_model]);
       CHECK(level.standalone_seconds > standalone.seconds);
+      // Each iteration solves the particle model forward and both models
+      // backward; every local control is a coarse column, so the local
+      // residual is zero and the FEM model is not solved forward (the
+      // start adds one adjoint solve of each).
+      const auto iterations = std::find_if(level.solve_phases.begin(),
+                                           level.solve_phases.end(),
+                                           [](const auto &phase) {
+                                             return phase.name == "iterations";
+                                           });
+      REQUIRE(iterations != level.solve_phases.end());
+      CHECK(iterations->solves[ltn::nonlocal_model] ==
+            2 * level.iterations + 1);
+      CHECK(iterations->solves[ltn::local_model] == level.iterations + 1);
       // The model solvers' totals are the coupled solve's alone.
       unsigned int solves = 0;
       for (std::size_t p = 0; p + 1 < level.solve_phases.size(); ++p)
