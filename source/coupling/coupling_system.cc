@@ -145,15 +145,6 @@ namespace ltn
 
   template <int dim>
   typename CouplingSystem<dim>::VectorType
-  CouplingSystem<dim>::observation_counts(const unsigned int k) const
-  {
-    return sum_over_rows(k, [](std::size_t, double) { return 1.; });
-  }
-
-
-
-  template <int dim>
-  typename CouplingSystem<dim>::VectorType
   CouplingSystem<dim>::sum_over_rows(
     const unsigned int                                k,
     const std::function<double(std::size_t, double)> &contribution) const

@@ -132,12 +132,6 @@ namespace ltn
                 model.observed_rows.push_back(i);
             model.pack_observed_rows();
           }
-        // As many columns as the model has controls span them all: the
-        // columns are independent (Gram-Schmidt drops dependent ones, unit
-        // columns are distinct).
-        model.spans_controls =
-          !model.columns.empty() &&
-          model.columns.size() == Z[model.columns[0]].controls.size();
       }
     form_coarse_matrix();
   }
@@ -436,7 +430,11 @@ namespace ltn
   bool
   DeflationSpace::spans(const unsigned int k) const
   {
-    return states[k].spans_controls;
+    // As many columns as the model has controls span them all: the columns
+    // are independent (Gram-Schmidt drops dependent ones, unit columns are
+    // distinct).
+    const std::vector<unsigned int> &columns = states[k].columns;
+    return !columns.empty() && columns.size() == Z[columns[0]].controls.size();
   }
 
 

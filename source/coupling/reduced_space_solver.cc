@@ -138,7 +138,9 @@ namespace ltn
             return g;
           },
           [&](const unsigned int k) { return system.models[k]->new_vector(); },
-          [&](const unsigned int k) { return system.observation_counts(k); },
+          // sum_q w_q b_qi^2 with w_q > 0: nonzero exactly where some
+          // point reads an unknown with a nonzero coefficient.
+          [&](const unsigned int k) { return system.observation_diagonal(k); },
           system.alpha,
           [&](const unsigned int k, const std::vector<VectorType> &controls) {
             return hessian.solvers[k]->forward(controls);

@@ -92,14 +92,6 @@ namespace ltn
     observation_diagonal(const unsigned int k) const;
 
     /**
-     * How many of the overlap's points (of all ranks) read each degree of
-     * freedom of model @p k: nonzero exactly where the mismatch observes
-     * it, and where the mismatch's gradient can be nonzero.
-     */
-    VectorType
-    observation_counts(const unsigned int k) const;
-
-    /**
      * `B_k^T W B_k`, assembled over the degrees of freedom of model @p k:
      * the mismatch's gradient for a field of model @p k alone (the other's
      * zero) as one sparse product over that model's unknowns, instead of a

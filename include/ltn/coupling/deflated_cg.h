@@ -179,8 +179,6 @@ namespace ltn
        */
       std::vector<std::size_t>         observed_rows;
       std::vector<std::vector<double>> packed_panels;
-      /** Do the model's columns span all its controls? */
-      bool spans_controls = false;
 
       /** Pack the panels' observed rows. */
       void
