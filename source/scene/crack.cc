@@ -231,6 +231,25 @@ namespace ltn
                       ", ...)",
                     "cracks inside the nonlocal region (Geometry/Nonlocal "
                     "region lower/upper corner): the local model has none");
+        // The local model covers the overlap, uncracked: a crack there
+        // would have the coupling match a cracked field to an uncracked one.
+        const Box<dim> uncoupled = geometry.shrunk_nonlocal_region();
+        check_input(!geometry.has_local_model() ||
+                      (uncoupled.contains(box.lower, tol) &&
+                       uncoupled.contains(box.upper, tol)),
+                    "Cracks/Corners",
+                    "a crack reaching from (" + to_string(box.lower[0]) + ", " +
+                      to_string(box.lower[1]) + ", ...) to (" +
+                      to_string(box.upper[0]) + ", " + to_string(box.upper[1]) +
+                      ", ...)",
+                    "cracks outside the overlap, which the local model covers "
+                    "uncracked: within the nonlocal region shrunk by "
+                    "Geometry/Overlap width on its faces inside the body, "
+                    "from (" +
+                      to_string(uncoupled.lower[0]) + ", " +
+                      to_string(uncoupled.lower[1]) + ", ...) to (" +
+                      to_string(uncoupled.upper[0]) + ", " +
+                      to_string(uncoupled.upper[1]) + ", ...)");
         // The lattice points x = lower + (i + 1/2) h near the crack.
         for (const double h : spacings)
           {
