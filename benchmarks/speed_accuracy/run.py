@@ -70,12 +70,12 @@ scenes = {
     "plate_2d": {
         "prm": os.path.join(root, "parameter_files", "lps_plate_2d_crack.prm"),
         "levels": [["Discretization/Mesh size=%g" % h]
-                   for h in (0.05, 0.025, 0.0125)],
+                   for h in (0.05, 0.025, 0.0125, 0.00625)],
         "runs": {
             "all peridynamic, gmres matrix-free":
                 (all_peridynamic + scalable, [0, 1, 2]),
             "all peridynamic, cg matrix-free":
-                (all_peridynamic + scalable_cg, [0, 1, 2]),
+                (all_peridynamic + scalable_cg, [0, 1, 2, 3]),
             # The sparse LU of 1.2M particle dofs does not fit: two levels.
             "all peridynamic, direct": (all_peridynamic + direct, [0, 1]),
             # The saddle-point LU: 3.7 s and 30 s at the first two levels
@@ -88,10 +88,10 @@ scenes = {
             "coupled, reduced space cg, gmres matrix-free":
                 (["Coupling/Method=reduced space cg"] + scalable, [0, 1]),
             "coupled, reduced space cg, cg matrix-free":
-                (["Coupling/Method=reduced space cg"] + scalable_cg, [0, 1, 2]),
+                (["Coupling/Method=reduced space cg"] + scalable_cg, [0, 1, 2, 3]),
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack": (["Coupling/Method=reduced space cg"] + scalable_cg +
-                      plate_region_sized_to_crack, [0, 1, 2]),
+                      plate_region_sized_to_crack, [0, 1, 2, 3]),
             # 4.8 s and 23 s (one rank, a 2-core Xeon, 2026-12-06).
             "coupled, full space gmres, matrix-free":
                 (full_space_gmres, [0, 1]),
