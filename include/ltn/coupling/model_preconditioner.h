@@ -4,6 +4,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
+#include <ltn/coupling/component_v_cycle.h>
 #include <ltn/coupling/stencil_matrix.h>
 
 #include <memory>
@@ -50,6 +51,10 @@ namespace ltn
     memory_consumption() const;
 
   private:
+    /** `node_out` the V-cycle applied to each column of `node_in`. */
+    void
+    apply_cycle() const;
+
     /** Is `amg` built on the surrogate (not on the matrix)? */
     const bool         on_surrogate;
     const unsigned int node_dofs;
@@ -68,11 +73,16 @@ namespace ltn
      */
     std::unique_ptr<StencilMatrix> stencil;
     /**
-     * Per component, a vector's values at the surrogate's nodes: all of
-     * them at once, so that the interleaved gather and scatter pass over a
-     * vector once, not once per component.
+     * The V-cycle on all components at once, where it repeats `amg`'s
+     * (ComponentVCycle::usable()); else empty.
      */
-    mutable std::vector<TrilinosWrappers::MPI::Vector> node_src, node_dst;
+    std::unique_ptr<ComponentVCycle> cycle;
+    /**
+     * A vector's values at the surrogate's nodes, a column per component,
+     * and the cycle's result: all components at once, so that the
+     * interleaved gather and scatter pass over a vector once.
+     */
+    std::unique_ptr<Epetra_MultiVector> node_in, node_out;
     /** `short_wave_weight` over the surrogate's diagonal, per owned row. */
     std::vector<double> short_wave_scaling;
     /** The subset of the constructor. */
