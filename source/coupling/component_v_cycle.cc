@@ -169,18 +169,20 @@ namespace ltn
   struct ComponentVCycle::Level
   {
     std::unique_ptr<Epetra_CrsMatrix> matrix; // null on the finest level
-    /** 1 / (theta d_i): ML's Chebyshev of degree 1 is x += (b - A x) / (theta
-     * d). */
+    /** 1 / (theta d_i), the Chebyshev step's scaling of row i. */
     std::vector<double> step;
     /** ML's prolongation from the next coarser level; its transpose
      *  restricts (ML's restriction is that transpose, stored apart). */
     std::unique_ptr<Epetra_CrsMatrix> prolongation;
     /** The right-hand side and solution (not on the finest level, whose
      *  are the caller's), and the residual. */
-    mutable std::unique_ptr<Epetra_MultiVector> rhs, solution, residual;
-    /** The values on the columns of `matrix`, `restriction`, `prolongation`. */
-    mutable std::unique_ptr<Epetra_MultiVector> matrix_ghosts,
-      prolongation_ghosts;
+    std::unique_ptr<Epetra_MultiVector> rhs, solution, residual;
+    /**
+     * Values on the columns of `matrix` and of `prolongation`: imported
+     * for a product, or gathered for its transpose before they are added
+     * up on their owners.
+     */
+    std::unique_ptr<Epetra_MultiVector> matrix_ghosts, prolongation_ghosts;
   };
 
 
@@ -318,12 +320,20 @@ namespace ltn
     const double       *step  = level.step.data();
     // Pre-smoothing from zero, then the residual.
     for (unsigned int c = 0; c < n_components; ++c)
-      for (std::size_t i = 0; i < n; ++i)
-        x[c][i] = b[c][i] * step[i];
+      {
+        const double *const b_c = b[c];
+        double *const       x_c = x[c];
+        for (std::size_t i = 0; i < n; ++i)
+          x_c[i] = b_c[i] * step[i];
+      }
     apply_operator(l, x, r);
     for (unsigned int c = 0; c < n_components; ++c)
-      for (std::size_t i = 0; i < n; ++i)
-        r[c][i] = b[c][i] - r[c][i];
+      {
+        const double *const b_c = b[c];
+        double *const       r_c = r[c];
+        for (std::size_t i = 0; i < n; ++i)
+          r_c[i] = b_c[i] - r_c[i];
+      }
     // The coarse correction.
     const bool          last       = l + 1 == levels.size();
     Epetra_MultiVector &coarse_rhs = last ? *ml_rhs : *levels[l + 1].rhs;
@@ -359,8 +369,12 @@ namespace ltn
     // Post-smoothing.
     apply_operator(l, x, r);
     for (unsigned int c = 0; c < n_components; ++c)
-      for (std::size_t i = 0; i < n; ++i)
-        x[c][i] += (b[c][i] - r[c][i]) * step[i];
+      {
+        const double *const b_c = b[c], *const r_c = r[c];
+        double *const x_c = x[c];
+        for (std::size_t i = 0; i < n; ++i)
+          x_c[i] += (b_c[i] - r_c[i]) * step[i];
+      }
   }
 
 
