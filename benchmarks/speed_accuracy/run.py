@@ -88,7 +88,8 @@ scenes = {
             "coupled, reduced space cg, gmres matrix-free":
                 (["Coupling/Method=reduced space cg"] + scalable, [0, 1]),
             "coupled, reduced space cg, cg matrix-free":
-                (["Coupling/Method=reduced space cg"] + scalable_cg, [0, 1, 2, 3]),
+                (["Coupling/Method=reduced space cg"] + scalable_cg,
+                 [0, 1, 2, 3]),
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack": (["Coupling/Method=reduced space cg"] + scalable_cg +
                       plate_region_sized_to_crack, [0, 1, 2, 3]),

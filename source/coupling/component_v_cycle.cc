@@ -9,6 +9,7 @@
 #include <ml_mls.h>
 
 #include <array>
+#include <type_traits>
 
 namespace ltn
 {
@@ -30,18 +31,107 @@ namespace ltn
       return std::unique_ptr<Epetra_CrsMatrix>(copy);
     }
 
+    /** A matrix's compressed rows and the columns of two vectors. */
+    template <unsigned int C>
+    struct RowsAndColumns
+    {
+      RowsAndColumns(const Epetra_CrsMatrix   &M,
+                     const Epetra_MultiVector &x,
+                     Epetra_MultiVector       &y)
+        : n_rows(M.NumMyRows())
+      {
+        M.ExtractCrsDataPointers(row_start, columns, values);
+        for (unsigned int c = 0; c < C; ++c)
+          {
+            x_c[c] = x[c];
+            y_c[c] = y[c];
+          }
+      }
+      const int                     n_rows;
+      int                          *row_start, *columns;
+      double                       *values;
+      std::array<const double *, C> x_c;
+      std::array<double *, C>       y_c;
+    };
+
     /**
      * `y = M x` (or `y += M x`) on every column, the matrix read once per
-     * row for all of them; @p ghosts holds `x` on the matrix's columns where
-     * they reach beyond the rank.
+     * row for all of them; `x` holds the values of the matrix's columns.
      */
     template <unsigned int C>
     void
     multiply_columns(const Epetra_CrsMatrix   &M,
                      const Epetra_MultiVector &x,
-                     Epetra_MultiVector       *ghosts,
                      Epetra_MultiVector       &y,
                      const bool                add)
+    {
+      const RowsAndColumns<C> m(M, x, y);
+      for (int i = 0; i < m.n_rows; ++i)
+        {
+          std::array<double, C> sum{};
+          for (int k = m.row_start[i]; k < m.row_start[i + 1]; ++k)
+            for (unsigned int c = 0; c < C; ++c)
+              sum[c] += m.values[k] * m.x_c[c][m.columns[k]];
+          for (unsigned int c = 0; c < C; ++c)
+            m.y_c[c][i] = add ? m.y_c[c][i] + sum[c] : sum[c];
+        }
+    }
+
+    /**
+     * `y = M^T x` on every column, the matrix read once per row for all of
+     * them: each row's contributions go to the columns it holds (`y` holds
+     * the matrix's columns).
+     */
+    template <unsigned int C>
+    void
+    multiply_transposed_columns(const Epetra_CrsMatrix   &M,
+                                const Epetra_MultiVector &x,
+                                Epetra_MultiVector       &y)
+    {
+      y.PutScalar(0.);
+      const RowsAndColumns<C> m(M, x, y);
+      for (int i = 0; i < m.n_rows; ++i)
+        {
+          std::array<double, C> x_i;
+          for (unsigned int c = 0; c < C; ++c)
+            x_i[c] = m.x_c[c][i];
+          for (int k = m.row_start[i]; k < m.row_start[i + 1]; ++k)
+            for (unsigned int c = 0; c < C; ++c)
+              m.y_c[c][m.columns[k]] += m.values[k] * x_i[c];
+        }
+    }
+
+    /** @p kernel called with the number of columns as a constant. */
+    template <typename Kernel>
+    void
+    with_columns(const int n_columns, const Kernel &kernel)
+    {
+      switch (n_columns)
+        {
+          case 1:
+            kernel(std::integral_constant<unsigned int, 1>());
+            return;
+          case 2:
+            kernel(std::integral_constant<unsigned int, 2>());
+            return;
+          case 3:
+            kernel(std::integral_constant<unsigned int, 3>());
+            return;
+          default:
+            AssertThrow(false, ExcNotImplemented());
+        }
+    }
+
+    /**
+     * `y = M x` (or `y += M x`) on every column; @p ghosts receives `x` on
+     * the matrix's columns where they reach beyond the rank.
+     */
+    void
+    multiply(const Epetra_CrsMatrix   &M,
+             const Epetra_MultiVector &x,
+             Epetra_MultiVector       *ghosts,
+             Epetra_MultiVector       &y,
+             const bool                add)
     {
       const Epetra_MultiVector *in = &x;
       if (M.Importer() != nullptr)
@@ -50,111 +140,29 @@ namespace ltn
           AssertThrow(error == 0, ExcMessage("importing a cycle's values"));
           in = ghosts;
         }
-      int    *row_start, *columns;
-      double *values;
-      M.ExtractCrsDataPointers(row_start, columns, values);
-      std::array<const double *, C> x_c;
-      std::array<double *, C>       y_c;
-      for (unsigned int c = 0; c < C; ++c)
-        {
-          x_c[c] = (*in)[c];
-          y_c[c] = y[c];
-        }
-      const int n_rows = M.NumMyRows();
-      for (int i = 0; i < n_rows; ++i)
-        {
-          std::array<double, C> sum{};
-          for (int k = row_start[i]; k < row_start[i + 1]; ++k)
-            for (unsigned int c = 0; c < C; ++c)
-              sum[c] += values[k] * x_c[c][columns[k]];
-          for (unsigned int c = 0; c < C; ++c)
-            y_c[c][i] = add ? y_c[c][i] + sum[c] : sum[c];
-        }
+      with_columns(x.NumVectors(), [&](auto C) {
+        multiply_columns<decltype(C)::value>(M, *in, y, add);
+      });
     }
 
     /**
-     * `y = M^T x` on every column, the matrix read once per row for all of
-     * them: each row's contributions go to the columns it holds, which
-     * @p ghosts collects before they are added up on their owners.
+     * `y = M^T x` on every column; @p ghosts collects the contributions to
+     * the matrix's columns before they are added up on their owners.
      */
-    template <unsigned int C>
-    void
-    multiply_transposed_columns(const Epetra_CrsMatrix   &M,
-                                const Epetra_MultiVector &x,
-                                Epetra_MultiVector       *ghosts,
-                                Epetra_MultiVector       &y)
-    {
-      Epetra_MultiVector &out = M.Importer() != nullptr ? *ghosts : y;
-      out.PutScalar(0.);
-      int    *row_start, *columns;
-      double *values;
-      M.ExtractCrsDataPointers(row_start, columns, values);
-      std::array<const double *, C> x_c;
-      std::array<double *, C>       y_c;
-      for (unsigned int c = 0; c < C; ++c)
-        {
-          x_c[c] = x[c];
-          y_c[c] = out[c];
-        }
-      const int n_rows = M.NumMyRows();
-      for (int i = 0; i < n_rows; ++i)
-        {
-          std::array<double, C> x_i;
-          for (unsigned int c = 0; c < C; ++c)
-            x_i[c] = x_c[c][i];
-          for (int k = row_start[i]; k < row_start[i + 1]; ++k)
-            for (unsigned int c = 0; c < C; ++c)
-              y_c[c][columns[k]] += values[k] * x_i[c];
-        }
-      if (M.Importer() != nullptr)
-        {
-          const int error = y.Export(*ghosts, *M.Importer(), Add);
-          AssertThrow(error == 0, ExcMessage("exporting a cycle's values"));
-        }
-    }
-
     void
     multiply_transposed(const Epetra_CrsMatrix   &M,
                         const Epetra_MultiVector &x,
                         Epetra_MultiVector       *ghosts,
                         Epetra_MultiVector       &y)
     {
-      switch (x.NumVectors())
+      Epetra_MultiVector &out = M.Importer() != nullptr ? *ghosts : y;
+      with_columns(x.NumVectors(), [&](auto C) {
+        multiply_transposed_columns<decltype(C)::value>(M, x, out);
+      });
+      if (M.Importer() != nullptr)
         {
-          case 1:
-            multiply_transposed_columns<1>(M, x, ghosts, y);
-            return;
-          case 2:
-            multiply_transposed_columns<2>(M, x, ghosts, y);
-            return;
-          case 3:
-            multiply_transposed_columns<3>(M, x, ghosts, y);
-            return;
-          default:
-            AssertThrow(false, ExcNotImplemented());
-        }
-    }
-
-    void
-    multiply(const Epetra_CrsMatrix   &M,
-             const Epetra_MultiVector &x,
-             Epetra_MultiVector       *ghosts,
-             Epetra_MultiVector       &y,
-             const bool                add)
-    {
-      switch (x.NumVectors())
-        {
-          case 1:
-            multiply_columns<1>(M, x, ghosts, y, add);
-            return;
-          case 2:
-            multiply_columns<2>(M, x, ghosts, y, add);
-            return;
-          case 3:
-            multiply_columns<3>(M, x, ghosts, y, add);
-            return;
-          default:
-            AssertThrow(false, ExcNotImplemented());
+          const int error = y.Export(*ghosts, *M.Importer(), Add);
+          AssertThrow(error == 0, ExcMessage("exporting a cycle's values"));
         }
     }
   } // namespace

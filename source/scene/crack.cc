@@ -221,14 +221,15 @@ namespace ltn
                       to_string(crack.corners[0][0]) + ", ...",
                     std::string("a crack of positive ") +
                       (dim == 2 ? "length" : "area (corners not in a line)"));
+        const std::string extent =
+          "a crack reaching from (" + to_string(box.lower[0]) + ", " +
+          to_string(box.lower[1]) + ", ...) to (" + to_string(box.upper[0]) +
+          ", " + to_string(box.upper[1]) + ", ...)";
         check_input(geometry.has_nonlocal_model() &&
                       geometry.nonlocal_region.contains(box.lower, tol) &&
                       geometry.nonlocal_region.contains(box.upper, tol),
                     "Cracks/Corners",
-                    "a crack reaching from (" + to_string(box.lower[0]) + ", " +
-                      to_string(box.lower[1]) + ", ...) to (" +
-                      to_string(box.upper[0]) + ", " + to_string(box.upper[1]) +
-                      ", ...)",
+                    extent,
                     "cracks inside the nonlocal region (Geometry/Nonlocal "
                     "region lower/upper corner): the local model has none");
         // The local model covers the overlap, uncracked: a crack there
@@ -238,10 +239,7 @@ namespace ltn
                       (uncoupled.contains(box.lower, tol) &&
                        uncoupled.contains(box.upper, tol)),
                     "Cracks/Corners",
-                    "a crack reaching from (" + to_string(box.lower[0]) + ", " +
-                      to_string(box.lower[1]) + ", ...) to (" +
-                      to_string(box.upper[0]) + ", " + to_string(box.upper[1]) +
-                      ", ...)",
+                    extent,
                     "cracks outside the overlap, which the local model covers "
                     "uncracked: within the nonlocal region shrunk by "
                     "Geometry/Overlap width on its faces inside the body, "
