@@ -352,7 +352,7 @@ namespace ltn
     Epetra_MultiVector *coarse_solution = nullptr;
     if (last)
       {
-        ML *ml_struct = static_cast<ML *>(ml);
+        ML *ml_struct = ml;
         ml_solution->PutScalar(0.);
         for (unsigned int c = 0; c < n_components; ++c)
           ML_Cycle_MG(&ml_struct->SingleLevel[l + 1],

@@ -10,6 +10,8 @@
 #include <memory>
 #include <vector>
 
+struct ML_Struct;
+
 namespace ltn
 {
   using namespace dealii;
@@ -34,8 +36,8 @@ namespace ltn
      * From @p amg, ML's hierarchy on the surrogate @p matrix, whose finest
      * level @p stencil serves (StencilMatrix::serve_finest_level()); both
      * must outlive this object. usable() says whether the hierarchy has the
-     * form this class repeats: smoothed aggregation with Chebyshev smoothing
-     * of degree 1 and at least two levels.
+     * form this class repeats: at least two levels, numbered from the
+     * finest, and Chebyshev smoothing of degree 1 on those it runs.
      */
     ComponentVCycle(const TrilinosWrappers::PreconditionAMG &amg,
                     const Epetra_CrsMatrix                  &matrix,
@@ -77,9 +79,10 @@ namespace ltn
                    const Epetra_MultiVector &x,
                    Epetra_MultiVector       &y) const;
 
-    const StencilMatrix                &stencil;
-    const unsigned int                  n_components;
-    void                               *ml = nullptr;
+    const StencilMatrix &stencil;
+    const unsigned int   n_components;
+    /** ML's hierarchy, where usable(); else null. */
+    ML_Struct                          *ml = nullptr;
     std::vector<Level>                  levels;
     std::unique_ptr<Epetra_MultiVector> ml_rhs, ml_solution;
   };
