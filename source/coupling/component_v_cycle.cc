@@ -2,22 +2,16 @@
 
 #include <ltn/coupling/component_v_cycle.h>
 
-#include <Epetra_Import.h>
 #include <ml_MultiLevelPreconditioner.h>
 #include <ml_epetra_utils.h>
 #include <ml_include.h>
 #include <ml_mls.h>
 
-#include <array>
-#include <type_traits>
 
 namespace ltn
 {
   namespace
   {
-    /** The most components a cycle serves (a 3D displacement). */
-    constexpr unsigned int max_components = 3;
-
     /** An ML operator copied into an Epetra matrix (null if it fails). */
     std::unique_ptr<Epetra_CrsMatrix>
     copy_of(ML_Operator &op)
@@ -31,139 +25,11 @@ namespace ltn
       return std::unique_ptr<Epetra_CrsMatrix>(copy);
     }
 
-    /** A matrix's compressed rows and the columns of two vectors. */
-    template <unsigned int C>
-    struct RowsAndColumns
-    {
-      RowsAndColumns(const Epetra_CrsMatrix   &M,
-                     const Epetra_MultiVector &x,
-                     Epetra_MultiVector       &y)
-        : n_rows(M.NumMyRows())
-      {
-        M.ExtractCrsDataPointers(row_start, columns, values);
-        for (unsigned int c = 0; c < C; ++c)
-          {
-            x_c[c] = x[c];
-            y_c[c] = y[c];
-          }
-      }
-      const int                     n_rows;
-      int                          *row_start, *columns;
-      double                       *values;
-      std::array<const double *, C> x_c;
-      std::array<double *, C>       y_c;
-    };
-
-    /**
-     * `y = M x` (or `y += M x`) on every column, the matrix read once per
-     * row for all of them; `x` holds the values of the matrix's columns.
-     */
-    template <unsigned int C>
+    /** An Epetra call's error code, which must be zero. */
     void
-    multiply_columns(const Epetra_CrsMatrix   &M,
-                     const Epetra_MultiVector &x,
-                     Epetra_MultiVector       &y,
-                     const bool                add)
+    check(const int error)
     {
-      const RowsAndColumns<C> m(M, x, y);
-      for (int i = 0; i < m.n_rows; ++i)
-        {
-          std::array<double, C> sum{};
-          for (int k = m.row_start[i]; k < m.row_start[i + 1]; ++k)
-            for (unsigned int c = 0; c < C; ++c)
-              sum[c] += m.values[k] * m.x_c[c][m.columns[k]];
-          for (unsigned int c = 0; c < C; ++c)
-            m.y_c[c][i] = add ? m.y_c[c][i] + sum[c] : sum[c];
-        }
-    }
-
-    /**
-     * `y = M^T x` on every column, the matrix read once per row for all of
-     * them: each row's contributions go to the columns it holds (`y` holds
-     * the matrix's columns).
-     */
-    template <unsigned int C>
-    void
-    multiply_transposed_columns(const Epetra_CrsMatrix   &M,
-                                const Epetra_MultiVector &x,
-                                Epetra_MultiVector       &y)
-    {
-      y.PutScalar(0.);
-      const RowsAndColumns<C> m(M, x, y);
-      for (int i = 0; i < m.n_rows; ++i)
-        {
-          std::array<double, C> x_i;
-          for (unsigned int c = 0; c < C; ++c)
-            x_i[c] = m.x_c[c][i];
-          for (int k = m.row_start[i]; k < m.row_start[i + 1]; ++k)
-            for (unsigned int c = 0; c < C; ++c)
-              m.y_c[c][m.columns[k]] += m.values[k] * x_i[c];
-        }
-    }
-
-    /** @p kernel called with the number of columns as a constant. */
-    template <typename Kernel>
-    void
-    with_columns(const int n_columns, const Kernel &kernel)
-    {
-      switch (n_columns)
-        {
-          case 1:
-            kernel(std::integral_constant<unsigned int, 1>());
-            return;
-          case 2:
-            kernel(std::integral_constant<unsigned int, 2>());
-            return;
-          case 3:
-            kernel(std::integral_constant<unsigned int, 3>());
-            return;
-          default:
-            AssertThrow(false, ExcNotImplemented());
-        }
-    }
-
-    /**
-     * `y = M x` (or `y += M x`) on every column; @p ghosts receives `x` on
-     * the matrix's columns where they reach beyond the rank.
-     */
-    void
-    multiply(const Epetra_CrsMatrix   &M,
-             const Epetra_MultiVector &x,
-             Epetra_MultiVector       *ghosts,
-             Epetra_MultiVector       &y,
-             const bool                add)
-    {
-      const Epetra_MultiVector *in = &x;
-      if (M.Importer() != nullptr)
-        {
-          const int error = ghosts->Import(x, *M.Importer(), Insert);
-          AssertThrow(error == 0, ExcMessage("importing a cycle's values"));
-          in = ghosts;
-        }
-      with_columns(x.NumVectors(), [&](auto C) {
-        multiply_columns<decltype(C)::value>(M, *in, y, add);
-      });
-    }
-
-    /**
-     * `y = M^T x` on every column; @p ghosts collects the contributions to
-     * the matrix's columns before they are added up on their owners.
-     */
-    void
-    multiply_transposed(const Epetra_CrsMatrix   &M,
-                        const Epetra_MultiVector &x,
-                        Epetra_MultiVector       *ghosts,
-                        Epetra_MultiVector       &y)
-    {
-      Epetra_MultiVector &out = M.Importer() != nullptr ? *ghosts : y;
-      with_columns(x.NumVectors(), [&](auto C) {
-        multiply_transposed_columns<decltype(C)::value>(M, x, out);
-      });
-      if (M.Importer() != nullptr)
-        {
-          const int error = y.Export(*ghosts, *M.Importer(), Add);
-          AssertThrow(error == 0, ExcMessage("exporting a cycle's values"));
-        }
+      AssertThrow(error == 0, ExcMessage("an Epetra product in the V-cycle"));
     }
   } // namespace
 
@@ -185,12 +51,6 @@ namespace ltn
     /** The right-hand side and solution (not on the finest level, whose
      *  are the caller's), and the residual. */
     std::unique_ptr<Epetra_MultiVector> rhs, solution, residual;
-    /**
-     * Values on the columns of `matrix` and of `prolongation`: imported
-     * for a product, or gathered for its transpose before they are added
-     * up on their owners.
-     */
-    std::unique_ptr<Epetra_MultiVector> matrix_ghosts, prolongation_ghosts;
   };
 
 
@@ -207,7 +67,6 @@ namespace ltn
         &amg.trilinos_operator());
     ML  *ml_struct = hierarchy ? const_cast<ML *>(hierarchy->GetML()) : nullptr;
     bool form      = ml_struct != nullptr && n_components >= 1 &&
-                n_components <= max_components &&
                 ml_struct->ML_finest_level == 0 &&
                 ml_struct->ML_num_actual_levels >= 2;
     // The levels run here: the two finest, or the finest alone if the
@@ -264,9 +123,6 @@ namespace ltn
             level.solution = vectors(own.RowMap());
           }
         level.residual = vectors(own.RowMap());
-        if (level.matrix)
-          level.matrix_ghosts = vectors(level.matrix->ColMap());
-        level.prolongation_ghosts = vectors(level.prolongation->ColMap());
       }
     if (form)
       {
@@ -309,7 +165,7 @@ namespace ltn
   {
     const Level &level = levels[l];
     if (level.matrix)
-      multiply(*level.matrix, x, level.matrix_ghosts.get(), y, false);
+      check(level.matrix->Multiply(false, x, y));
     else
       for (unsigned int c = 0; c < n_components; ++c)
         stencil.apply(x[c], y[c]);
@@ -345,10 +201,7 @@ namespace ltn
     // The coarse correction.
     const bool          last       = l + 1 == levels.size();
     Epetra_MultiVector &coarse_rhs = last ? *ml_rhs : *levels[l + 1].rhs;
-    multiply_transposed(*level.prolongation,
-                        r,
-                        level.prolongation_ghosts.get(),
-                        coarse_rhs);
+    check(level.prolongation->Multiply(true, r, coarse_rhs));
     Epetra_MultiVector *coarse_solution = nullptr;
     if (last)
       {
@@ -369,11 +222,9 @@ namespace ltn
         coarse_solution = levels[l + 1].solution.get();
         cycle(l + 1, coarse_rhs, *coarse_solution);
       }
-    multiply(*level.prolongation,
-             *coarse_solution,
-             level.prolongation_ghosts.get(),
-             x,
-             true);
+    // The residual's vector is free until the post-smoothing.
+    check(level.prolongation->Multiply(false, *coarse_solution, r));
+    check(x.Update(1., r, 1.));
     // Post-smoothing.
     apply_operator(l, x, r);
     for (unsigned int c = 0; c < n_components; ++c)
@@ -414,14 +265,11 @@ namespace ltn
                  std::size_t(0);
     };
     for (const Level &level : levels)
-      bytes += matrix_bytes(level.matrix.get()) +
-               matrix_bytes(level.prolongation.get()) +
-               level.step.size() * sizeof(double) +
-               vector_bytes(level.rhs.get()) +
-               vector_bytes(level.solution.get()) +
-               vector_bytes(level.residual.get()) +
-               vector_bytes(level.matrix_ghosts.get()) +
-               vector_bytes(level.prolongation_ghosts.get());
+      bytes +=
+        matrix_bytes(level.matrix.get()) +
+        matrix_bytes(level.prolongation.get()) +
+        level.step.size() * sizeof(double) + vector_bytes(level.rhs.get()) +
+        vector_bytes(level.solution.get()) + vector_bytes(level.residual.get());
     return bytes + vector_bytes(ml_rhs.get()) + vector_bytes(ml_solution.get());
   }
 } // namespace ltn

@@ -23,11 +23,11 @@ namespace ltn
    * transfers between the two finest levels and the second level's matrix
    * once per component: on the 3D bars of benchmarks/scaling those are most
    * of the cycle's bytes (the finest level is the stencil). This class runs
-   * the two finest levels itself on all components, from copies of ML's
-   * matrices and ML's Chebyshev coefficients, so each matrix is read once
-   * per row for all of them, and hands the coarser levels to ML's own cycle,
-   * one component at a time. The result is ML's cycle per component, to
-   * round-off.
+   * the two finest levels itself on all components, with Epetra's products
+   * on the block of components (each matrix read once for all of them) of
+   * copies of ML's matrices and ML's Chebyshev coefficients, and hands the
+   * coarser levels to ML's own cycle, one component at a time. The result is
+   * ML's cycle per component, to round-off.
    */
   class ComponentVCycle
   {
