@@ -49,6 +49,10 @@ scalable = ["Coupling/Model solvers=preconditioned gmres",
 # column and two per outer iteration, on a coarse mesh.
 scalable_cg = scalable + ["Coupling/Model solvers=preconditioned cg",
                           "Coupling/Local model solver=direct"]
+# The same to tolerances sized to the plate's errors (above 1e-4 relative):
+# the openings move by less than 1e-6 relative (README, eighth session).
+scalable_cg_loose = scalable_cg + ["Coupling/Relative tolerance=1e-6",
+                                   "Coupling/Model solver tolerance=1e-8"]
 # The full-space GMRES solves each model loosely inside its preconditioner,
 # the finite element model factorized (with GMRES on it the plate at 1/160
 # did not converge).
@@ -64,18 +68,41 @@ plate_region_sized_to_crack = [
     "Geometry/Nonlocal region lower corner=0.65, 0.9",
     "Geometry/Nonlocal region upper corner=1.35, 1.1",
     "Geometry/Overlap width=0.05"]
+plate_mesh_sizes = (0.05, 0.025, 0.0125, 0.00625, 0.003125)
+
+
+def plate_fem_mesh_no_finer_than(coarsest):
+    """A level's settings that keep the plate's particles (spacing and
+    horizon a quarter and half of the level's mesh size, the file's ratios)
+    on an FEM mesh no finer than `coarsest`: the FEM model's error then
+    stays far below the particles' (README, "The plate's FEM mesh")."""
+    def settings(level):
+        h = plate_mesh_sizes[level]
+        if h >= coarsest:
+            return []
+        return ["Discretization/Mesh size=%g" % coarsest,
+                "Nonlocal model/Particle spacing to mesh size ratio=%g"
+                % (0.25 * h / coarsest),
+                "Nonlocal model/Horizon to mesh size ratio=%g"
+                % (0.5 * h / coarsest)]
+    return settings
+
+
 # Per scene: its parameter file, the settings of each resolution, and the
 # runs: name -> (settings, the resolutions it runs at, by index).
 scenes = {
     "plate_2d": {
         "prm": os.path.join(root, "parameter_files", "lps_plate_2d_crack.prm"),
         "levels": [["Discretization/Mesh size=%g" % h]
-                   for h in (0.05, 0.025, 0.0125, 0.00625)],
+                   for h in plate_mesh_sizes],
         "runs": {
             "all peridynamic, gmres matrix-free":
                 (all_peridynamic + scalable, [0, 1, 2]),
             "all peridynamic, cg matrix-free":
                 (all_peridynamic + scalable_cg, [0, 1, 2, 3]),
+            # At 1/1280: 19.8M unknowns, 48 s and 5.8 GB on one rank.
+            "all peridynamic, cg matrix-free, tolerance 1e-6":
+                (all_peridynamic + scalable_cg_loose, [0, 1, 2, 3, 4]),
             # The sparse LU of 1.2M particle dofs does not fit: two levels.
             "all peridynamic, direct": (all_peridynamic + direct, [0, 1]),
             # The saddle-point LU: 3.7 s and 30 s at the first two levels
@@ -94,6 +121,19 @@ scenes = {
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack": (["Coupling/Method=reduced space cg"] + scalable_cg +
                       plate_region_sized_to_crack, [0, 1, 2, 3]),
+            # The same with the FEM cells no smaller than 0.0125 (1/80) near
+            # the overlap: at 1/640 the opening moves by 1.8e-6 relative
+            # (0.2 % of the error) and the FEM model has half the unknowns.
+            "coupled, reduced space cg, cg matrix-free, region sized to the "
+            "crack, FEM cells at least 0.0125":
+                (["Coupling/Method=reduced space cg"] + scalable_cg +
+                 plate_region_sized_to_crack +
+                 [plate_fem_mesh_no_finer_than(0.0125)], [0, 1, 2, 3]),
+            "coupled, reduced space cg, cg matrix-free, region sized to the "
+            "crack, FEM cells at least 0.0125, tolerance 1e-6":
+                (["Coupling/Method=reduced space cg"] + scalable_cg_loose +
+                 plate_region_sized_to_crack +
+                 [plate_fem_mesh_no_finer_than(0.0125)], [0, 1, 2, 3, 4]),
             # 4.8 s and 23 s (one rank, a 2-core Xeon, 2026-12-06).
             "coupled, full space gmres, matrix-free":
                 (full_space_gmres, [0, 1]),
@@ -137,8 +177,10 @@ def run(scene, name, level, sets):
         return json.load(open(summary))
     command = [options.ltn, scenes[scene]["prm"], "--output-dir", out,
                "--set", "Output/Write VTU=false"]
+    # A run's setting is a string, or a function of the level giving a list.
     for s in scenes[scene]["levels"][level] + sets:
-        command += ["--set", s]
+        for setting in s(level) if callable(s) else [s]:
+            command += ["--set", setting]
     subprocess.run(command, check=True, capture_output=True)
     return json.load(open(summary))
 
@@ -232,8 +274,9 @@ import matplotlib.pyplot as plt
 shown = [s for s in scenes if s in options.scenes]
 # One colour per solver in every panel.
 names = list(dict.fromkeys(n for s in shown for n in scenes[s]["runs"]))
-colour = {n: plt.get_cmap("tab10")(i % 10) for i, n in enumerate(names)}
-figure, axes = plt.subplots(1, len(shown), figsize=(6 * len(shown), 4.5),
+colour = {n: plt.get_cmap("tab20")(i % 20) for i, n in enumerate(names)}
+# The legends go below the panels: inside, they hid the plate's curves.
+figure, axes = plt.subplots(1, len(shown), figsize=(7 * len(shown), 7.5),
                             squeeze=False)
 for axis, scene in zip(axes[0], shown):
     for name in scenes[scene]["runs"]:
@@ -246,6 +289,6 @@ for axis, scene in zip(axes[0], shown):
     axis.set_xlabel("wall time of the run (s), 1 rank")
     axis.set_ylabel("relative error")
     axis.grid(True, which="both", alpha=0.3)
-    axis.legend(fontsize=7)
+    axis.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12))
 figure.tight_layout()
 figure.savefig(options.png, dpi=120)
