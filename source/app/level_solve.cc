@@ -49,6 +49,8 @@ namespace ltn
     record.nonlocal_block_unknowns      = solution.nonlocal_block_unknowns;
     record.preconditioner_setup_seconds = solution.preconditioner_setup_seconds;
     record.standalone_seconds           = solution.standalone_seconds;
+    record.smallest_ritz_value          = solution.smallest_ritz_value;
+    record.largest_ritz_value           = solution.largest_ritz_value;
     for (const auto &phase : solution.phases)
       {
         LevelRecord::SolvePhase &entry =

@@ -466,7 +466,8 @@ namespace ltn
     NormalEquations::BlockVectorType                &x,
     SolverControl                                   &control,
     const std::function<void(double residual_norm)> &before_products,
-    NormalEquations::States                         *states)
+    NormalEquations::States                         *states,
+    RitzValues                                      *ritz_values)
   {
     using BlockVectorType = NormalEquations::BlockVectorType;
     using Observation     = NormalEquations::Observation;
@@ -561,6 +562,8 @@ namespace ltn
         if (!(pq > 0))
           throw SolverControl::NoConvergence(step, residual);
         const double step_length = rz / pq;
+        if (ritz_values)
+          ritz_values->add_step_length(step_length);
         x.add(step_length, p);
         if (states)
           {
@@ -580,8 +583,10 @@ namespace ltn
         observed_z          = preconditioned_residual();
         const double rz_new = r * z;
         const double beta   = rz_new / rz;
-        rz                  = rz_new;
-        c                   = coarse.solve_product(z, observed_z);
+        if (ritz_values)
+          ritz_values->add_direction_coefficient(beta);
+        rz = rz_new;
+        c  = coarse.solve_product(z, observed_z);
         c *= -1.;
         p.sadd(beta, 1., z);
         for (std::size_t i = 0; i < observed_p.size(); ++i)

@@ -208,6 +208,7 @@ namespace ltn
                   preconditioner->n_nonlocal_block_unknowns();
               }
             solution.coarse_modes = coarse.size();
+            RitzValues ritz_values;
             solve_deflated_cg(
               equations,
               coarse,
@@ -221,8 +222,18 @@ namespace ltn
               theta,
               control,
               relax,
-              &states);
+              &states,
+              &ritz_values);
             end_phase("iterations");
+            // What bounds the iterations (section 19): on the cracked plate
+            // an isolated smallest value, and a largest that grows like the
+            // overlap's width over the horizon.
+            const std::vector<double> ritz = ritz_values.values();
+            if (!ritz.empty())
+              {
+                solution.smallest_ritz_value = ritz.front();
+                solution.largest_ritz_value  = ritz.back();
+              }
           }
         catch (const SolverControl::NoConvergence &)
           {

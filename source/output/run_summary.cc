@@ -62,6 +62,12 @@ namespace ltn
             preconditioner["nonlocal block unknowns"] =
               level.nonlocal_block_unknowns;
         }
+      if (level.largest_ritz_value > 0)
+        {
+          JsonValue &ritz  = j["solver"]["Ritz values"];
+          ritz["smallest"] = level.smallest_ritz_value;
+          ritz["largest"]  = level.largest_ritz_value;
+        }
       if (level.standalone_seconds > 0)
         j["solver"]["standalone model solves seconds"] =
           level.standalone_seconds;

@@ -17,6 +17,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "dense_controls.h"
@@ -402,6 +403,116 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
                 << std::endl;
       CHECK(plain_control.last_step() > iterations + 3);
     }
+}
+
+
+
+TEST_CASE("the deflated CG's Ritz values reach the ends of the spectrum of "
+          "the operator its coarse space and preconditioner leave",
+          "[solvers][unit]")
+{
+  CountedEquations         counted(0.3);
+  const FullMatrix<double> A = counted.matrix();
+  // Jacobi, and the coarse columns dense: Zd, n x m.
+  const auto jacobi = [&](BlockVectorType &dst, const BlockVectorType &src) {
+    for (unsigned int i = 0; i < n; ++i)
+      dst(i) = src(i) / A(i, i);
+    dst.compress(VectorOperation::insert);
+  };
+  const std::vector<BlockVectorType> Z = coarse_columns();
+  const unsigned int                 m = Z.size();
+  FullMatrix<double>                 Zd(n, m);
+  for (unsigned int j = 0; j < m; ++j)
+    for (unsigned int i = 0; i < n; ++i)
+      Zd(i, j) = Z[j](i);
+
+  // Deflated PCG is CG on J^{-1/2} (A - A Z E^{-1} Z^T A) J^{-1/2}, E = Z^T A
+  // Z, on the complement of Z's m directions (which it maps to zero).
+  FullMatrix<double> AZ(n, m), E(m, m), deflated(n, n);
+  A.mmult(AZ, Zd);
+  Zd.Tmmult(E, AZ);
+  FullMatrix<double> E_inverse(m, m);
+  E_inverse.invert(E);
+  FullMatrix<double> AZ_E_inverse(n, m);
+  AZ.mmult(AZ_E_inverse, E_inverse);
+  AZ_E_inverse.mTmult(deflated, AZ);
+  LAPACKFullMatrix<double> scaled(n, n);
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int l = 0; l < n; ++l)
+      scaled(i, l) = (A(i, l) - deflated(i, l)) / std::sqrt(A(i, i) * A(l, l));
+  scaled.compute_eigenvalues();
+  std::vector<double> spectrum(n);
+  for (unsigned int i = 0; i < n; ++i)
+    spectrum[i] = scaled.eigenvalue(i).real();
+  std::sort(spectrum.begin(), spectrum.end());
+  for (unsigned int i = 0; i < m; ++i)
+    REQUIRE(std::abs(spectrum[i]) < 1e-10 * spectrum.back());
+  const double lowest = spectrum[m], highest = spectrum.back();
+
+  const DeflationSpace coarse(deflation_columns(), counted.equations);
+  const Observation    d = CountedEquations::data(
+    [](unsigned int q) { return 1 + std::sin(0.9 * q) + 0.01 * q; });
+  BlockVectorType x = new_vector();
+  SolverControl   control(100, 1e-12 * counted.rhs(d).l2_norm());
+  RitzValues      ritz_values;
+  solve_deflated_cg(
+    counted.equations,
+    coarse,
+    jacobi,
+    d,
+    x,
+    control,
+    [](double) {},
+    nullptr,
+    &ritz_values);
+  const std::vector<double> ritz = ritz_values.values();
+  REQUIRE(ritz.size() == control.last_step());
+  std::cout << "deflated CG test: " << ritz.size() << " Ritz values in ["
+            << ritz.front() << ", " << ritz.back() << "], the spectrum ["
+            << lowest << ", " << highest << "]" << std::endl;
+  // Inside the spectrum's ends, and near them once CG has converged (the
+  // largest to 1e-9 here, the smallest, whose eigenvector the right-hand
+  // side holds less of, to 3e-4).
+  CHECK(ritz.front() > lowest * (1 - 1e-8));
+  CHECK(ritz.back() < highest * (1 + 1e-8));
+  CHECK(ritz.front() < lowest * 1.01);
+  CHECK(ritz.back() > highest * 0.99);
+
+  // Without coarse columns the iterates are CG's (for the first steps,
+  // before round-off parts them): so are the Ritz values, which deal.II's
+  // CG gives from the steps whose next direction it has formed.
+  const DeflationSpace none({}, counted.equations);
+  const auto identity = [](BlockVectorType &dst, const BlockVectorType &src) {
+    dst = src;
+  };
+  BlockVectorType early = new_vector();
+  SolverControl   four(4, 0.);
+  RitzValues      early_ritz;
+  CHECK_THROWS_AS(solve_deflated_cg(
+                    counted.equations,
+                    none,
+                    identity,
+                    d,
+                    early,
+                    four,
+                    [](double) {},
+                    nullptr,
+                    &early_ritz),
+                  SolverControl::NoConvergence);
+  std::vector<double>       cg_ritz;
+  SolverControl             five(5, 0.);
+  SolverCG<BlockVectorType> cg(five);
+  cg.connect_eigenvalues_slot(
+    [&](const std::vector<double> &values) { cg_ritz = values; });
+  BlockVectorType y = new_vector();
+  CHECK_THROWS_AS(
+    cg.solve(DenseOperator{A}, y, counted.rhs(d), PreconditionIdentity()),
+    SolverControl::NoConvergence);
+  const std::vector<double> mine = early_ritz.values();
+  REQUIRE(mine.size() == 4);
+  REQUIRE(cg_ritz.size() == 4);
+  for (unsigned int i = 0; i < 4; ++i)
+    CHECK(std::abs(mine[i] - cg_ritz[i]) < 1e-10 * cg_ritz.back());
 }
 
 

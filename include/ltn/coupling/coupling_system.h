@@ -176,6 +176,12 @@ namespace ltn
     /** Wall time to build that preconditioner. */
     double preconditioner_setup_seconds = 0;
     /**
+     * The reduced-space CG's extreme Ritz values (RitzValues): estimates of
+     * the extreme eigenvalues of the reduced Hessian as its preconditioner
+     * and coarse space leave it; 0 without.
+     */
+    double smallest_ritz_value = 0, largest_ritz_value = 0;
+    /**
      * Wall time of what solving each model once alone costs with the same
      * solvers and tolerances: building both model solvers, and a forward
      * solve of each from zero with its data and the final controls, after

@@ -7,6 +7,8 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <ltn/coupling/ritz_values.h>
+
 #include <array>
 #include <functional>
 #include <vector>
@@ -248,6 +250,9 @@ namespace ltn
    * give, by the recurrences of the iterates, so they are exact to the inner
    * solves' tolerances, and a final solve for `x` starting from them has
    * little left to do.
+   *
+   * If @p ritz_values is given, it records each step length and direction
+   * coefficient: the Ritz values of the preconditioned, deflated operator.
    */
   void
   solve_deflated_cg(
@@ -260,5 +265,6 @@ namespace ltn
     NormalEquations::BlockVectorType                &x,
     SolverControl                                   &control,
     const std::function<void(double residual_norm)> &before_products,
-    NormalEquations::States                         *states = nullptr);
+    NormalEquations::States                         *states      = nullptr,
+    RitzValues                                      *ritz_values = nullptr);
 } // namespace ltn

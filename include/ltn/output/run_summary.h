@@ -38,6 +38,8 @@ namespace ltn
     types::global_dof_index nonlocal_block_unknowns = 0;
     /** CouplingSolution::standalone_seconds. */
     double standalone_seconds = 0;
+    /** CouplingSolution::smallest_ritz_value and largest_ritz_value. */
+    double smallest_ritz_value = 0, largest_ritz_value = 0;
     /**
      * Per model (nonlocal, local): its own solver's solves, iterations,
      * and wall time (rank 0's) in all, in operator products and in the
