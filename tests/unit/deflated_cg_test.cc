@@ -231,6 +231,26 @@ namespace
     const NormalEquations       equations;
   };
 
+  using Preconditioner =
+    std::function<void(BlockVectorType &, const BlockVectorType &)>;
+
+  /** Jacobi on the dense @p A (kept alive by the caller). */
+  Preconditioner
+  jacobi_of(const FullMatrix<double> &A)
+  {
+    return [&A](BlockVectorType &dst, const BlockVectorType &src) {
+      for (unsigned int i = 0; i < n; ++i)
+        dst(i) = src(i) / A(i, i);
+      dst.compress(VectorOperation::insert);
+    };
+  }
+
+  void
+  no_preconditioner(BlockVectorType &dst, const BlockVectorType &src)
+  {
+    dst = src;
+  }
+
   struct Balanced
   {
     void
@@ -255,13 +275,8 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
       INFO("alpha = " << alpha);
       CountedEquations         counted(alpha);
       const FullMatrix<double> A      = counted.matrix();
-      const auto               jacobi = [&](BlockVectorType       &dst,
-                              const BlockVectorType &src) {
-        for (unsigned int i = 0; i < n; ++i)
-          dst(i) = src(i) / A(i, i);
-        dst.compress(VectorOperation::insert);
-      };
-      const Observation d = CountedEquations::data(
+      const Preconditioner     jacobi = jacobi_of(A);
+      const Observation        d      = CountedEquations::data(
         [](unsigned int q) { return 1 + std::sin(0.9 * q) + 0.01 * q; });
       const BlockVectorType b = counted.rhs(d);
 
@@ -412,13 +427,9 @@ TEST_CASE("the deflated CG's Ritz values reach the ends of the spectrum of "
           "[solvers][unit]")
 {
   CountedEquations         counted(0.3);
-  const FullMatrix<double> A = counted.matrix();
-  // Jacobi, and the coarse columns dense: Zd, n x m.
-  const auto jacobi = [&](BlockVectorType &dst, const BlockVectorType &src) {
-    for (unsigned int i = 0; i < n; ++i)
-      dst(i) = src(i) / A(i, i);
-    dst.compress(VectorOperation::insert);
-  };
+  const FullMatrix<double> A      = counted.matrix();
+  const Preconditioner     jacobi = jacobi_of(A);
+  // The coarse columns dense: Zd, n x m.
   const std::vector<BlockVectorType> Z = coarse_columns();
   const unsigned int                 m = Z.size();
   FullMatrix<double>                 Zd(n, m);
@@ -482,16 +493,13 @@ TEST_CASE("the deflated CG's Ritz values reach the ends of the spectrum of "
   // before round-off parts them): so are the Ritz values, which deal.II's
   // CG gives from the steps whose next direction it has formed.
   const DeflationSpace none({}, counted.equations);
-  const auto identity = [](BlockVectorType &dst, const BlockVectorType &src) {
-    dst = src;
-  };
-  BlockVectorType early = new_vector();
-  SolverControl   four(4, 0.);
-  RitzValues      early_ritz;
+  BlockVectorType      early = new_vector();
+  SolverControl        four(4, 0.);
+  RitzValues           early_ritz;
   CHECK_THROWS_AS(solve_deflated_cg(
                     counted.equations,
                     none,
-                    identity,
+                    no_preconditioner,
                     d,
                     early,
                     four,
@@ -525,13 +533,10 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
   const Observation        d = CountedEquations::data(
     [](unsigned int q) { return std::cos(0.4 * q * q); });
   const BlockVectorType b = counted.rhs(d);
-  const auto identity = [](BlockVectorType &dst, const BlockVectorType &src) {
-    dst = src;
-  };
-  BlockVectorType x = new_vector();
-  SolverControl   control(200, 1e-10 * b.l2_norm());
+  BlockVectorType       x = new_vector();
+  SolverControl         control(200, 1e-10 * b.l2_norm());
   solve_deflated_cg(
-    counted.equations, none, identity, d, x, control, [](double) {});
+    counted.equations, none, no_preconditioner, d, x, control, [](double) {});
   // The start's residual b is one product with F^T W.
   CHECK(counted.n_adjoint == control.last_step() + 1);
 
@@ -553,10 +558,14 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
     {
       BlockVectorType early = new_vector();
       SolverControl   stop(steps, 0.);
-      CHECK_THROWS_AS(
-        solve_deflated_cg(
-          counted.equations, none, identity, d, early, stop, [](double) {}),
-        SolverControl::NoConvergence);
+      CHECK_THROWS_AS(solve_deflated_cg(counted.equations,
+                                        none,
+                                        no_preconditioner,
+                                        d,
+                                        early,
+                                        stop,
+                                        [](double) {}),
+                      SolverControl::NoConvergence);
       BlockVectorType           cg_early = new_vector();
       SolverControl             cg_stop(steps, 0.);
       SolverCG<BlockVectorType> cg_steps(cg_stop);
@@ -571,6 +580,6 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
   SolverControl too_few(3, 1e-10 * b.l2_norm());
   CHECK_THROWS_AS(
     solve_deflated_cg(
-      counted.equations, none, identity, d, x, too_few, [](double) {}),
+      counted.equations, none, no_preconditioner, d, x, too_few, [](double) {}),
     SolverControl::NoConvergence);
 }
