@@ -250,6 +250,27 @@ namespace ltn
 
 
 
+  void
+  ComponentVCycle::release_ml_levels()
+  {
+    Assert(usable(), ExcInternalError());
+    // An emptied operator, as ML leaves the levels it does not use: its
+    // destructor cleans it again.
+    const auto empty = [this](ML_Operator &op) {
+      ML_Operator_Clean(&op);
+      ML_Operator_Init(&op, ml->comm);
+    };
+    for (unsigned int l = 0; l < levels.size(); ++l)
+      {
+        if (l > 0)
+          empty(ml->Amat[l]);
+        empty(ml->Rmat[l]);
+        empty(ml->Pmat[l + 1]);
+      }
+  }
+
+
+
   std::size_t
   ComponentVCycle::memory_consumption() const
   {

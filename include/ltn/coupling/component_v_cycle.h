@@ -57,6 +57,17 @@ namespace ltn
     void
     vmult(Epetra_MultiVector &dst, const Epetra_MultiVector &src) const;
 
+    /**
+     * Free ML's own matrices of the levels this cycle runs (their operators,
+     * the transfers between them and to the next level, and their
+     * transposes, which the cycle forms by products): after this, ML's
+     * hierarchy can only run from the first level it keeps, as vmult()
+     * calls it, not from the finest (`amg.vmult()` must not be called).
+     * Only where usable(); once.
+     */
+    void
+    release_ml_levels();
+
     /** Bytes of the copied matrices and the work vectors (estimated). */
     std::size_t
     memory_consumption() const;
