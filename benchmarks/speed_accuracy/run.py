@@ -21,6 +21,7 @@ import csv
 import json
 import math
 import os
+import re
 import subprocess
 
 here = os.path.dirname(os.path.abspath(__file__))
@@ -68,31 +69,52 @@ plate_region_sized_to_crack = [
     "Geometry/Nonlocal region lower corner=0.65, 0.9",
     "Geometry/Nonlocal region upper corner=1.35, 1.1",
     "Geometry/Overlap width=0.05"]
+plate_prm = os.path.join(root, "parameter_files", "lps_plate_2d_crack.prm")
 plate_mesh_sizes = (0.05, 0.025, 0.0125, 0.00625, 0.003125)
+
+
+def prm_value(path, name):
+    """The number a parameter file sets `name` to."""
+    for line in open(path):
+        match = re.match(r"\s*set\s+%s\s*=\s*(\S+)" % re.escape(name), line)
+        if match:
+            return float(match.group(1))
+    raise KeyError(name + " in " + path)
 
 
 def plate_fem_mesh_no_finer_than(coarsest):
     """A level's settings that keep the plate's particles (spacing and
-    horizon a quarter and half of the level's mesh size, the file's ratios)
-    on an FEM mesh no finer than `coarsest`: the FEM model's error then
-    stays far below the particles' (README, "The plate's FEM mesh")."""
+    horizon the file's ratios to the level's mesh size) on an FEM mesh no
+    finer than `coarsest`: the FEM model's error then stays far below the
+    particles' (README, eighth session)."""
+    ratios = ["Nonlocal model/" + name for name in
+              ("Particle spacing to mesh size ratio",
+               "Horizon to mesh size ratio")]
+    values = [prm_value(plate_prm, r.split("/")[1]) for r in ratios]
+
     def settings(level):
         h = plate_mesh_sizes[level]
         if h >= coarsest:
             return []
-        return ["Discretization/Mesh size=%g" % coarsest,
-                "Nonlocal model/Particle spacing to mesh size ratio=%g"
-                % (0.25 * h / coarsest),
-                "Nonlocal model/Horizon to mesh size ratio=%g"
-                % (0.5 * h / coarsest)]
+        return (["Discretization/Mesh size=%g" % coarsest] +
+                ["%s=%g" % (r, v * h / coarsest)
+                 for r, v in zip(ratios, values)])
     return settings
+
+
+# The sized region on FEM cells no smaller than 1/80 near the overlap: at
+# 1/640 the opening moves by 1.8e-6 relative (0.2 % of the error) and the
+# FEM model has half the unknowns.
+plate_sized_fem_to_1_80 = (["Coupling/Method=reduced space cg"] +
+                           plate_region_sized_to_crack +
+                           [plate_fem_mesh_no_finer_than(0.0125)])
 
 
 # Per scene: its parameter file, the settings of each resolution, and the
 # runs: name -> (settings, the resolutions it runs at, by index).
 scenes = {
     "plate_2d": {
-        "prm": os.path.join(root, "parameter_files", "lps_plate_2d_crack.prm"),
+        "prm": plate_prm,
         "levels": [["Discretization/Mesh size=%g" % h]
                    for h in plate_mesh_sizes],
         "runs": {
@@ -100,7 +122,7 @@ scenes = {
                 (all_peridynamic + scalable, [0, 1, 2]),
             "all peridynamic, cg matrix-free":
                 (all_peridynamic + scalable_cg, [0, 1, 2, 3]),
-            # At 1/1280: 19.8M unknowns, 48 s and 5.8 GB on one rank.
+            # At 1/1280: 19.8M unknowns, 50 s and 5.8 GB on one rank.
             "all peridynamic, cg matrix-free, tolerance 1e-6":
                 (all_peridynamic + scalable_cg_loose, [0, 1, 2, 3, 4]),
             # The sparse LU of 1.2M particle dofs does not fit: two levels.
@@ -121,19 +143,12 @@ scenes = {
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack": (["Coupling/Method=reduced space cg"] + scalable_cg +
                       plate_region_sized_to_crack, [0, 1, 2, 3]),
-            # The same with the FEM cells no smaller than 0.0125 (1/80) near
-            # the overlap: at 1/640 the opening moves by 1.8e-6 relative
-            # (0.2 % of the error) and the FEM model has half the unknowns.
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack, FEM cells at least 0.0125":
-                (["Coupling/Method=reduced space cg"] + scalable_cg +
-                 plate_region_sized_to_crack +
-                 [plate_fem_mesh_no_finer_than(0.0125)], [0, 1, 2, 3]),
+                (scalable_cg + plate_sized_fem_to_1_80, [0, 1, 2, 3]),
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack, FEM cells at least 0.0125, tolerance 1e-6":
-                (["Coupling/Method=reduced space cg"] + scalable_cg_loose +
-                 plate_region_sized_to_crack +
-                 [plate_fem_mesh_no_finer_than(0.0125)], [0, 1, 2, 3, 4]),
+                (scalable_cg_loose + plate_sized_fem_to_1_80, [0, 1, 2, 3, 4]),
             # 4.8 s and 23 s (one rank, a 2-core Xeon, 2026-12-06).
             "coupled, full space gmres, matrix-free":
                 (full_space_gmres, [0, 1]),
