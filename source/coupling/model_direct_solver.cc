@@ -94,12 +94,20 @@ namespace ltn
     AssertThrow(!model.matrix_free,
                 ExcMessage("a direct solver needs the assembled matrix"));
     outside.add_indices(model.fixed);
+    const DirectSolver::Ordering ordering =
+      model.mesh_couplings ? DirectSolver::Ordering::nested_dissection :
+                             DirectSolver::Ordering::minimum_degree;
     // The free block's matrix goes once it is factorized.
-    direct = free_block_only ? std::make_unique<DirectSolver>(
-                                 free_block_matrix(model, outside),
-                                 0.5,
-                                 DirectSolver::Symmetry::positive_definite) :
-                               std::make_unique<DirectSolver>(model.matrix);
+    direct = free_block_only ?
+               std::make_unique<DirectSolver>(
+                 free_block_matrix(model, outside),
+                 0.5,
+                 DirectSolver::Symmetry::positive_definite,
+                 ordering) :
+               std::make_unique<DirectSolver>(model.matrix,
+                                              0.5,
+                                              DirectSolver::Symmetry::general,
+                                              ordering);
   }
 
 

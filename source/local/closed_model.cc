@@ -52,7 +52,8 @@ namespace ltn
                                                model.communicator,
                                                model.relevant);
     model.matrix.reinit(model.owned, model.owned, dsp, model.communicator);
-    model.rhs = model.new_vector();
+    model.mesh_couplings = true;
+    model.rhs            = model.new_vector();
   }
 
 

@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <random>
 
 using namespace ltn;
@@ -72,7 +73,12 @@ TEST_CASE("the direct solver solves A and A^T for one or many right-hand sides",
   const IndexSet     rows =
     Utilities::MPI::create_evenly_distributed_partitioning(MPI_COMM_WORLD, n);
   const TrilinosWrappers::SparseMatrix A = nonsymmetric_matrix(rows);
-  const DirectSolver                   solver(A);
+  const DirectSolver                   solver(
+    A,
+    0.5,
+    DirectSolver::Symmetry::general,
+    GENERATE(DirectSolver::Ordering::minimum_degree,
+             DirectSolver::Ordering::nested_dissection));
 
   std::mt19937                               random(5);
   std::uniform_real_distribution<double>     uniform(-1., 1.);
@@ -120,4 +126,66 @@ TEST_CASE("the direct solver solves A and A^T for one or many right-hand sides",
           CHECK(one.linfty_norm() < 1e-14 * many[j].linfty_norm());
         }
     }
+}
+
+
+
+TEST_CASE("nested dissection fills a mesh's matrix less than minimum degree",
+          "[solvers][unit]")
+{
+  // The matrix of FE_Q(1) on an n^3 grid of nodes (every node coupled to
+  // the 26 around it): the couplings of a mesh, which the FEM models'
+  // factorizations are ordered for (doc/discretization.md, section 10).
+  const int          n    = 24;
+  const unsigned int size = n * n * n;
+  const IndexSet     rows =
+    Utilities::MPI::create_evenly_distributed_partitioning(MPI_COMM_WORLD,
+                                                           size);
+  const auto neighbours = [n](const int i) {
+    const int        x = i % n, y = (i / n) % n, z = i / (n * n);
+    std::vector<int> around;
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx)
+          if ((dx != 0 || dy != 0 || dz != 0) && x + dx >= 0 && x + dx < n &&
+              y + dy >= 0 && y + dy < n && z + dz >= 0 && z + dz < n)
+            around.push_back(i + dx + n * (dy + n * dz));
+    return around;
+  };
+  DynamicSparsityPattern pattern(size, size, rows);
+  for (const auto i : rows)
+    {
+      pattern.add(i, i);
+      for (const int j : neighbours(i))
+        pattern.add(i, j);
+    }
+  TrilinosWrappers::SparseMatrix matrix;
+  matrix.reinit(rows, rows, pattern, MPI_COMM_WORLD);
+  // Diagonally dominant: symmetric positive definite.
+  for (const auto i : rows)
+    {
+      matrix.set(i, i, 27.);
+      for (const int j : neighbours(i))
+        matrix.set(i, j, -1.);
+    }
+  matrix.compress(VectorOperation::insert);
+
+  TrilinosWrappers::MPI::Vector b(rows, MPI_COMM_WORLD), x(b);
+  b = 1.;
+  std::array<double, 2> entries{};
+  for (const auto ordering : {DirectSolver::Ordering::minimum_degree,
+                              DirectSolver::Ordering::nested_dissection})
+    {
+      const DirectSolver solver(matrix,
+                                0.5,
+                                DirectSolver::Symmetry::positive_definite,
+                                ordering);
+      solver.solve(x, b);
+      CHECK(relative_residual(matrix, false, x, b) < 1e-13);
+      entries[ordering == DirectSolver::Ordering::nested_dissection] =
+        solver.factor_entries();
+    }
+  INFO("factor entries: minimum degree " << entries[0] << ", nested dissection "
+                                         << entries[1]);
+  CHECK(entries[1] < 0.8 * entries[0]);
 }

@@ -204,6 +204,12 @@ namespace ltn
      * (ModelDirectSolver, section 10).
      */
     bool symmetric_free_block = false;
+    /**
+     * Does `M` couple only the unknowns of a mesh's cells (the FEM models)?
+     * A direct solver then orders it by nested dissection, not by the
+     * minimum degree that suits nonlocal stencils' wide rows (DirectSolver).
+     */
+    bool mesh_couplings = false;
     /** The near null space for AMG: per mode, a flag per owned dof. */
     std::vector<std::vector<bool>> constant_modes;
     /** @} */

@@ -56,14 +56,28 @@ namespace ltn
     };
 
     /**
+     * The fill-reducing ordering (doc/discretization.md, section 10).
+     * `minimum_degree`: approximate minimum degree with detection of
+     * quasi-dense rows, for the wide rows of nonlocal stencils and the
+     * optimality systems built on them. `nested_dissection`: for the
+     * matrices of a mesh, whose unknowns couple only within cells.
+     */
+    enum class Ordering
+    {
+      minimum_degree,
+      nested_dissection
+    };
+
+    /**
      * Factorize @p matrix with MUMPS's relative pivot threshold
      * @p pivot_threshold (a pivot must be at least this fraction of the
-     * largest entry of its column). Throws SingularFactorization if MUMPS
-     * finds the matrix numerically singular.
+     * largest entry of its column), in the order @p ordering. Throws
+     * SingularFactorization if MUMPS finds the matrix numerically singular.
      */
     explicit DirectSolver(const TrilinosWrappers::SparseMatrix &matrix,
                           const double   pivot_threshold = 0.5,
-                          const Symmetry symmetry        = Symmetry::general);
+                          const Symmetry symmetry        = Symmetry::general,
+                          const Ordering ordering = Ordering::minimum_degree);
 
     ~DirectSolver();
 
@@ -85,6 +99,10 @@ namespace ltn
     solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
           const std::vector<TrilinosWrappers::MPI::Vector> &b,
           const bool                                        transpose) const;
+
+    /** The entries of the factors, over all ranks (MUMPS's INFOG(29)). */
+    double
+    factor_entries() const;
 
   private:
     struct Mumps;
