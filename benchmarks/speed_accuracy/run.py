@@ -8,11 +8,12 @@ the horizon stays two spacings) with every solver of the coupled problem and
 with LPS on the whole body ("all peridynamic", `Geometry/Models = nonlocal
 only`) at the same spacing. The error is that of the maximum crack opening,
 relative to a reference: the Richardson extrapolation of the openings of
-the three finest resolutions of the all-peridynamic solver with the most
-resolutions (the fastest of those at its finest; the observed order is
-printed and written to the CSV). For each coupled run it prints the time the
+the three finest resolutions of the scene's reference solver, an
+all-peridynamic one to a tight tolerance (the observed order is printed and
+written to the CSV). For each coupled run it prints the time the
 all-peridynamic solve would take at the same error, along the line through
-its two finest points. Writes results.csv (one row per run) and
+the two finest points of the fastest all-peridynamic solver with the most
+resolutions. Writes results.csv (one row per run) and
 error_vs_time.png (error against wall time of the whole run, one curve per
 solver, one panel per scene).
 """
@@ -36,7 +37,7 @@ parser.add_argument("--reuse", action="store_true",
                     help="keep the runs whose summary.json exists (resume)")
 parser.add_argument("--only", nargs="+", metavar="RUN",
                     help="run only these curves (their names as in the CSV; "
-                    "the error needs an all-peridynamic one)")
+                    "the error needs the scene's reference one)")
 options = parser.parse_args()
 
 all_peridynamic = ["Geometry/Models=nonlocal only"]
@@ -54,6 +55,14 @@ scalable_cg = scalable + ["Coupling/Model solvers=preconditioned cg",
 # the openings move by less than 1e-6 relative (README, eighth session).
 scalable_cg_loose = scalable_cg + ["Coupling/Relative tolerance=1e-6",
                                    "Coupling/Model solver tolerance=1e-8"]
+# The all-peridynamic solve is one CG, whose tolerance is the model solver's
+# alone (`Relative tolerance` is the coupled CG's): to 1e-8, and to 1e-6,
+# sized to the openings' errors as the coupled CG's 1e-6 is (README, ninth
+# session).
+all_peridynamic_cg_to = {
+    tolerance: all_peridynamic + scalable_cg +
+    ["Coupling/Model solver tolerance=%g" % tolerance]
+    for tolerance in (1e-8, 1e-6)}
 # The full-space GMRES solves each model loosely inside its preconditioner,
 # the finite element model factorized (with GMRES on it the plate at 1/160
 # did not converge).
@@ -110,11 +119,38 @@ plate_sized_fem_to_1_80 = (["Coupling/Method=reduced space cg"] +
                            [plate_fem_mesh_no_finer_than(0.0125)])
 
 
-# Per scene: its parameter file, the settings of each resolution, and the
-# runs: name -> (settings, the resolutions it runs at, by index).
+bar_prm = os.path.join(here, "cracked_bar_3d.prm")
+bar_mesh_size = prm_value(bar_prm, "Mesh size")
+# Spacing 1/8 leaves the collar (two horizons deep) no room inside the bar.
+bar_spacings = (1 / 16, 1 / 32, 1 / 64, 1 / 128)
+
+
+def bar_particles_on(mesh_size, fe_degree=None, graded_layers=None):
+    """A level's settings that put the bar's particles (the level's spacing,
+    the horizon two spacings) on FEM cells of `mesh_size` near the nonlocal
+    region, optionally of another degree and graded."""
+    def settings(level):
+        spacing = bar_spacings[level]
+        local = []
+        if fe_degree is not None:
+            local.append("Local model/Finite element degree=%d" % fe_degree)
+        if graded_layers is not None:
+            local.append("Local model/Graded mesh layers=%d" % graded_layers)
+        return (["Discretization/Mesh size=%g" % mesh_size,
+                 "Nonlocal model/Particle spacing to mesh size ratio=%g" %
+                 (spacing / mesh_size),
+                 "Nonlocal model/Horizon to mesh size ratio=%g" %
+                 (2 * spacing / mesh_size)] + local)
+    return settings
+
+
+# Per scene: its parameter file, its reference solver, the settings of each
+# resolution, and the runs: name -> (settings, the resolutions it runs at,
+# by index).
 scenes = {
     "plate_2d": {
         "prm": plate_prm,
+        "reference": "all peridynamic, cg matrix-free, tolerance 1e-8",
         "levels": [["Discretization/Mesh size=%g" % h]
                    for h in plate_mesh_sizes],
         "runs": {
@@ -123,8 +159,10 @@ scenes = {
             "all peridynamic, cg matrix-free":
                 (all_peridynamic + scalable_cg, [0, 1, 2, 3]),
             # At 1/1280: 19.8M unknowns, 50 s and 5.8 GB on one rank.
+            "all peridynamic, cg matrix-free, tolerance 1e-8":
+                (all_peridynamic_cg_to[1e-8], [0, 1, 2, 3, 4]),
             "all peridynamic, cg matrix-free, tolerance 1e-6":
-                (all_peridynamic + scalable_cg_loose, [0, 1, 2, 3, 4]),
+                (all_peridynamic_cg_to[1e-6], [0, 1, 2, 3, 4]),
             # The sparse LU of 1.2M particle dofs does not fit: two levels.
             "all peridynamic, direct": (all_peridynamic + direct, [0, 1]),
             # The saddle-point LU: 3.7 s and 30 s at the first two levels
@@ -155,12 +193,10 @@ scenes = {
         },
     },
     "bar_3d": {
-        "prm": os.path.join(here, "cracked_bar_3d.prm"),
-        "levels": [["Nonlocal model/Particle spacing to mesh size ratio=%g" % r,
-                    "Nonlocal model/Horizon to mesh size ratio=%g" % (2 * r)]
-                   # Spacing 1/8 leaves the collar (two horizons deep) no
-                   # room inside the bar.
-                   for r in (0.5, 0.25, 0.125, 0.0625)],
+        "prm": bar_prm,
+        "reference": "all peridynamic, cg matrix-free",
+        "levels": [bar_particles_on(bar_mesh_size)(level)
+                   for level in range(len(bar_spacings))],
         "runs": {
             "all peridynamic, gmres matrix-free":
                 (all_peridynamic + scalable, [0, 1, 2]),
@@ -168,6 +204,8 @@ scenes = {
             # on one rank) for the CG curves only.
             "all peridynamic, cg matrix-free":
                 (all_peridynamic + scalable_cg, [0, 1, 2, 3]),
+            "all peridynamic, cg matrix-free, tolerance 1e-6":
+                (all_peridynamic_cg_to[1e-6], [0, 1, 2, 3]),
             # The 3D LU of the finest level's LPS matrix fills in.
             "coupled, reduced space cg, direct":
                 (["Coupling/Method=reduced space cg"] + direct, [0, 1]),
@@ -176,6 +214,14 @@ scenes = {
             "coupled, reduced space cg, cg matrix-free":
                 (["Coupling/Method=reduced space cg"] + scalable_cg,
                  [0, 1, 2, 3]),
+            # FEM cells small enough that the FEM model's error does not
+            # cancel the particles' (README, ninth session); FE_Q(2) needs
+            # spacings of at most half its cells: from 1/32 on.
+            "coupled, reduced space cg, cg matrix-free, FE_Q(2) on cells "
+            "of 0.0625, tolerance 1e-6":
+                (["Coupling/Method=reduced space cg"] + scalable_cg_loose +
+                 [bar_particles_on(1 / 16, fe_degree=2, graded_layers=2)],
+                 [1, 2, 3]),
             "coupled, full space gmres, matrix-free":
                 (full_space_gmres, [0, 1]),
         },
@@ -224,15 +270,11 @@ for scene in options.scenes:
             print(scene, name, level, summary["timings"]["total"],
                   summary["mechanics"]["crack_openings"][0]["max_opening"],
                   flush=True)
-    # The reference: the all-peridynamic run with the most levels (the
-    # fastest at its finest level of those), from its three finest.
-    def reach(name):
-        levels = scenes[scene]["runs"][name][1]
-        return (len(levels),
-                -results[(name, levels[-1])]["timings"]["total"])
-
-    reference_run = max((name for name in scenes[scene]["runs"]
-                         if name.startswith("all peridynamic")), key=reach)
+    # The reference opening: the reference solver's three finest levels.
+    reference_run = scenes[scene]["reference"]
+    if reference_run not in scenes[scene]["runs"]:
+        raise SystemExit("--only: the errors of %s need its reference run, "
+                         "\"%s\"" % (scene, reference_run))
     reference_levels = scenes[scene]["runs"][reference_run][1][-3:]
     openings = [results[(reference_run, level)]["mechanics"]
                 ["crack_openings"][0]["max_opening"]
@@ -246,10 +288,20 @@ for scene in options.scenes:
         return abs(opening / reference - 1)
 
     # The all-peridynamic time at a coupled run's error: along the log-log
-    # line through the reference run's two finest points.
-    (t1, e1), (t2, e2) = [(results[(reference_run, level)]["timings"]
-                           ["total"], error(results[(reference_run, level)]))
-                          for level in reference_levels[-2:]]
+    # line through the two finest points of the fastest all-peridynamic run
+    # with the most levels.
+    def reach(name):
+        levels = scenes[scene]["runs"][name][1]
+        return (len(levels),
+                -results[(name, levels[-1])]["timings"]["total"])
+
+    fastest_run = max((name for name in scenes[scene]["runs"]
+                       if name.startswith("all peridynamic")), key=reach)
+    print(scene, "equal-error times along", fastest_run)
+    (t1, e1), (t2, e2) = [(results[(fastest_run, level)]["timings"]["total"],
+                           error(results[(fastest_run, level)]))
+                          for level in scenes[scene]["runs"][fastest_run][1]
+                          [-2:]]
     slope = math.log(e2 / e1) / math.log(t2 / t1)
     for (name, level), summary in results.items():
         if name.startswith("coupled"):
