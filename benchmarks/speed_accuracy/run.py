@@ -12,8 +12,9 @@ the three finest resolutions of the scene's reference solver, an
 all-peridynamic one to a tight tolerance (the observed order is printed and
 written to the CSV). For each coupled run it prints the time the
 all-peridynamic solve would take at the same error, along the line through
-the two finest points of the fastest all-peridynamic solver with the most
-resolutions. Writes results.csv (one row per run) and
+the two finest points of the scene's equal-error line, the all-peridynamic
+CG to a tolerance sized to the error. Writes results.csv (one row per run)
+and
 error_vs_time.png (error against wall time of the whole run, one curve per
 solver, one panel per scene).
 """
@@ -51,8 +52,9 @@ scalable = ["Coupling/Model solvers=preconditioned gmres",
 # column and two per outer iteration, on a coarse mesh.
 scalable_cg = scalable + ["Coupling/Model solvers=preconditioned cg",
                           "Coupling/Local model solver=direct"]
-# The same to tolerances sized to the plate's errors (above 1e-4 relative):
-# the openings move by less than 1e-6 relative (README, eighth session).
+# The same to tolerances sized to the openings' errors (above 1e-4
+# relative): they move by at most 7.3e-7 relative on the plate (README,
+# eighth session) and 3.1e-6 on the bar at 1/64 (ninth session).
 scalable_cg_loose = scalable_cg + ["Coupling/Relative tolerance=1e-6",
                                    "Coupling/Model solver tolerance=1e-8"]
 # The all-peridynamic solve is one CG, whose tolerance is the model solver's
@@ -91,23 +93,31 @@ def prm_value(path, name):
     raise KeyError(name + " in " + path)
 
 
+def lattice_on_mesh(mesh_size, spacing, horizon):
+    """The settings that put particles of `spacing` and `horizon` on FEM
+    cells of `mesh_size` near the nonlocal region (the file's ratios are to
+    the mesh size)."""
+    return ["Discretization/Mesh size=%g" % mesh_size,
+            "Nonlocal model/Particle spacing to mesh size ratio=%g" %
+            (spacing / mesh_size),
+            "Nonlocal model/Horizon to mesh size ratio=%g" %
+            (horizon / mesh_size)]
+
+
 def plate_fem_mesh_no_finer_than(coarsest):
     """A level's settings that keep the plate's particles (spacing and
     horizon the file's ratios to the level's mesh size) on an FEM mesh no
     finer than `coarsest`: the FEM model's error then stays far below the
     particles' (README, eighth session)."""
-    ratios = ["Nonlocal model/" + name for name in
-              ("Particle spacing to mesh size ratio",
-               "Horizon to mesh size ratio")]
-    values = [prm_value(plate_prm, r.split("/")[1]) for r in ratios]
+    spacing, horizon = [prm_value(plate_prm, name) for name in
+                        ("Particle spacing to mesh size ratio",
+                         "Horizon to mesh size ratio")]
 
     def settings(level):
         h = plate_mesh_sizes[level]
         if h >= coarsest:
             return []
-        return (["Discretization/Mesh size=%g" % coarsest] +
-                ["%s=%g" % (r, v * h / coarsest)
-                 for r, v in zip(ratios, values)])
+        return lattice_on_mesh(coarsest, spacing * h, horizon * h)
     return settings
 
 
@@ -136,21 +146,19 @@ def bar_particles_on(mesh_size, fe_degree=None, graded_layers=None):
             local.append("Local model/Finite element degree=%d" % fe_degree)
         if graded_layers is not None:
             local.append("Local model/Graded mesh layers=%d" % graded_layers)
-        return (["Discretization/Mesh size=%g" % mesh_size,
-                 "Nonlocal model/Particle spacing to mesh size ratio=%g" %
-                 (spacing / mesh_size),
-                 "Nonlocal model/Horizon to mesh size ratio=%g" %
-                 (2 * spacing / mesh_size)] + local)
+        return lattice_on_mesh(mesh_size, spacing, 2 * spacing) + local
     return settings
 
 
-# Per scene: its parameter file, its reference solver, the settings of each
-# resolution, and the runs: name -> (settings, the resolutions it runs at,
-# by index).
+# Per scene: its parameter file, its reference solver (the error's), its
+# equal-error line (the fastest all-peridynamic solver at the errors in
+# question), the settings of each resolution, and the runs: name ->
+# (settings, the resolutions it runs at, by index).
 scenes = {
     "plate_2d": {
         "prm": plate_prm,
         "reference": "all peridynamic, cg matrix-free, tolerance 1e-8",
+        "equal-error line": "all peridynamic, cg matrix-free, tolerance 1e-6",
         "levels": [["Discretization/Mesh size=%g" % h]
                    for h in plate_mesh_sizes],
         "runs": {
@@ -158,7 +166,7 @@ scenes = {
                 (all_peridynamic + scalable, [0, 1, 2]),
             "all peridynamic, cg matrix-free":
                 (all_peridynamic + scalable_cg, [0, 1, 2, 3]),
-            # At 1/1280: 19.8M unknowns, 50 s and 5.8 GB on one rank.
+            # At 1/1280: 19.8M unknowns, 52 s and 5.4 GB on one rank.
             "all peridynamic, cg matrix-free, tolerance 1e-8":
                 (all_peridynamic_cg_to[1e-8], [0, 1, 2, 3, 4]),
             "all peridynamic, cg matrix-free, tolerance 1e-6":
@@ -195,6 +203,7 @@ scenes = {
     "bar_3d": {
         "prm": bar_prm,
         "reference": "all peridynamic, cg matrix-free",
+        "equal-error line": "all peridynamic, cg matrix-free, tolerance 1e-6",
         "levels": [bar_particles_on(bar_mesh_size)(level)
                    for level in range(len(bar_spacings))],
         "runs": {
@@ -256,12 +265,20 @@ def extrapolate(values):
 
 
 if options.only:
-    for scene in scenes.values():
-        scene["runs"] = {name: run for name, run in scene["runs"].items()
-                         if name in options.only}
+    for name, scene in scenes.items():
+        scene["runs"] = {run_name: run
+                         for run_name, run in scene["runs"].items()
+                         if run_name in options.only}
+        missing = [scene[key] for key in ("reference", "equal-error line")
+                   if scene["runs"] and scene[key] not in scene["runs"]]
+        if missing:
+            raise SystemExit("--only: the errors and ratios of %s need %s" %
+                             (name, ", ".join('"%s"' % m for m in missing)))
 
 rows = []
 for scene in options.scenes:
+    if not scenes[scene]["runs"]:
+        continue
     results = {}
     for name, (sets, levels) in scenes[scene]["runs"].items():
         for level in levels:
@@ -272,9 +289,6 @@ for scene in options.scenes:
                   flush=True)
     # The reference opening: the reference solver's three finest levels.
     reference_run = scenes[scene]["reference"]
-    if reference_run not in scenes[scene]["runs"]:
-        raise SystemExit("--only: the errors of %s need its reference run, "
-                         "\"%s\"" % (scene, reference_run))
     reference_levels = scenes[scene]["runs"][reference_run][1][-3:]
     openings = [results[(reference_run, level)]["mechanics"]
                 ["crack_openings"][0]["max_opening"]
@@ -288,19 +302,11 @@ for scene in options.scenes:
         return abs(opening / reference - 1)
 
     # The all-peridynamic time at a coupled run's error: along the log-log
-    # line through the two finest points of the fastest all-peridynamic run
-    # with the most levels.
-    def reach(name):
-        levels = scenes[scene]["runs"][name][1]
-        return (len(levels),
-                -results[(name, levels[-1])]["timings"]["total"])
-
-    fastest_run = max((name for name in scenes[scene]["runs"]
-                       if name.startswith("all peridynamic")), key=reach)
-    print(scene, "equal-error times along", fastest_run)
-    (t1, e1), (t2, e2) = [(results[(fastest_run, level)]["timings"]["total"],
-                           error(results[(fastest_run, level)]))
-                          for level in scenes[scene]["runs"][fastest_run][1]
+    # line through the two finest points of the equal-error line.
+    line_run = scenes[scene]["equal-error line"]
+    (t1, e1), (t2, e2) = [(results[(line_run, level)]["timings"]["total"],
+                           error(results[(line_run, level)]))
+                          for level in scenes[scene]["runs"][line_run][1]
                           [-2:]]
     slope = math.log(e2 / e1) / math.log(t2 / t1)
     for (name, level), summary in results.items():

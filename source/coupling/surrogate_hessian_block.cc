@@ -54,7 +54,9 @@ namespace ltn
     // scene's 67,584 unknowns 10 s and 44 million factor entries, where the
     // general LU took 45-57 s (pivots on the zero diagonal blocks delayed)
     // or, with the rows permuted to put L on the diagonal, 10 s and 100
-    // million entries; in 2D at h = 1/256 0.44 s against 0.9 s.
+    // million entries; in 2D at h = 1/256 0.44 s against 0.9 s. Nested
+    // dissection, the FEM models' order, helped in 3D and not in 2D (§20):
+    // it keeps minimum degree.
     saddle_point_solver =
       std::make_unique<DirectSolver>(saddle_point,
                                      0.5,
