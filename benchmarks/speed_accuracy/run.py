@@ -14,9 +14,8 @@ written to the CSV). For each coupled run it prints the time the
 all-peridynamic solve would take at the same error, along the line through
 the two finest points of the scene's equal-error line, the all-peridynamic
 CG to a tolerance sized to the error. Writes results.csv (one row per run)
-and
-error_vs_time.png (error against wall time of the whole run, one curve per
-solver, one panel per scene).
+and error_vs_time.png (error against wall time of the whole run, one curve
+per solver, one panel per scene).
 """
 import argparse
 import csv
@@ -38,7 +37,8 @@ parser.add_argument("--reuse", action="store_true",
                     help="keep the runs whose summary.json exists (resume)")
 parser.add_argument("--only", nargs="+", metavar="RUN",
                     help="run only these curves (their names as in the CSV; "
-                    "the error needs the scene's reference one)")
+                    "each scene run needs its reference and its "
+                    "equal-error line)")
 options = parser.parse_args()
 
 all_peridynamic = ["Geometry/Models=nonlocal only"]

@@ -19,21 +19,14 @@ using namespace ltn;
 namespace
 {
   /**
-   * A nonsymmetric, nonsingular n x n matrix: a convection-diffusion
-   * stencil plus one far entry per row, so that A and A^T differ.
+   * The square matrix whose row i (this rank's @p rows) holds the entries
+   * `entries(i)`, pairs of column and value.
    */
+  template <typename Entries>
   TrilinosWrappers::SparseMatrix
-  nonsymmetric_matrix(const IndexSet &rows)
+  matrix_of(const IndexSet &rows, const Entries &entries)
   {
-    const unsigned int     n = rows.size();
-    DynamicSparsityPattern pattern(n, n, rows);
-    const auto             entries = [n](const unsigned int i) {
-      return std::vector<std::pair<unsigned int, double>>{
-        {i, 4.},
-        {(i + 1) % n, -1.3},
-        {(i + n - 1) % n, -0.7},
-        {(i + 7) % n, 0.2 + 0.001 * i}};
-    };
+    DynamicSparsityPattern pattern(rows.size(), rows.size(), rows);
     for (const auto i : rows)
       for (const auto &[j, value] : entries(i))
         pattern.add(i, j);
@@ -44,6 +37,23 @@ namespace
         matrix.set(i, j, value);
     matrix.compress(VectorOperation::insert);
     return matrix;
+  }
+
+  /**
+   * A nonsymmetric, nonsingular n x n matrix: a convection-diffusion
+   * stencil plus one far entry per row, so that A and A^T differ.
+   */
+  TrilinosWrappers::SparseMatrix
+  nonsymmetric_matrix(const IndexSet &rows)
+  {
+    const unsigned int n = rows.size();
+    return matrix_of(rows, [n](const unsigned int i) {
+      return std::vector<std::pair<unsigned int, double>>{
+        {i, 4.},
+        {(i + 1) % n, -1.3},
+        {(i + n - 1) % n, -0.7},
+        {(i + 7) % n, 0.2 + 0.001 * i}};
+    });
   }
 
   double
@@ -141,34 +151,19 @@ TEST_CASE("nested dissection fills a mesh's matrix less than minimum degree",
   const IndexSet     rows =
     Utilities::MPI::create_evenly_distributed_partitioning(MPI_COMM_WORLD,
                                                            size);
-  const auto neighbours = [n](const int i) {
-    const int        x = i % n, y = (i / n) % n, z = i / (n * n);
-    std::vector<int> around;
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx)
-          if ((dx != 0 || dy != 0 || dz != 0) && x + dx >= 0 && x + dx < n &&
-              y + dy >= 0 && y + dy < n && z + dz >= 0 && z + dz < n)
-            around.push_back(i + dx + n * (dy + n * dz));
-    return around;
-  };
-  DynamicSparsityPattern pattern(size, size, rows);
-  for (const auto i : rows)
-    {
-      pattern.add(i, i);
-      for (const int j : neighbours(i))
-        pattern.add(i, j);
-    }
-  TrilinosWrappers::SparseMatrix matrix;
-  matrix.reinit(rows, rows, pattern, MPI_COMM_WORLD);
   // Diagonally dominant: symmetric positive definite.
-  for (const auto i : rows)
-    {
-      matrix.set(i, i, 27.);
-      for (const int j : neighbours(i))
-        matrix.set(i, j, -1.);
-    }
-  matrix.compress(VectorOperation::insert);
+  const TrilinosWrappers::SparseMatrix matrix =
+    matrix_of(rows, [n](const int i) {
+      const int x = i % n, y = (i / n) % n, z = i / (n * n);
+      std::vector<std::pair<int, double>> row{{i, 27.}};
+      for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx)
+            if ((dx != 0 || dy != 0 || dz != 0) && x + dx >= 0 && x + dx < n &&
+                y + dy >= 0 && y + dy < n && z + dz >= 0 && z + dz < n)
+              row.emplace_back(i + dx + n * (dy + n * dz), -1.);
+      return row;
+    });
 
   TrilinosWrappers::MPI::Vector b(rows, MPI_COMM_WORLD), x(b);
   b = 1.;
