@@ -265,7 +265,8 @@ def extrapolate(values):
 
 
 if options.only:
-    for name, scene in scenes.items():
+    for name in options.scenes:
+        scene = scenes[name]
         scene["runs"] = {run_name: run
                          for run_name, run in scene["runs"].items()
                          if run_name in options.only}

@@ -236,6 +236,9 @@ namespace ltn
       id.nrhs      = b.NumVectors();
       id.lrhs      = std::max(stride, 1);
       icntl(id, 9) = transpose ? 0 : 1;
+      // All the columns in one block: the factors are read once per call,
+      // not once per 32 columns (MUMPS's default blocking).
+      icntl(id, 27) = std::max(id.nrhs, 1);
       // Many sparse right-hand sides (at most a tenth of their entries
       // nonzero, as the local coarse columns: a control's unit vector moved
       // to the free rows it couples to) are given as sparse columns: MUMPS

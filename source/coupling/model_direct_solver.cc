@@ -1,7 +1,9 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
-#include <ltn/base/matrix_rows.h>
 #include <ltn/coupling/model_direct_solver.h>
+
+#include <Epetra_Import.h>
+#include <Epetra_Vector.h>
 
 namespace ltn
 {
@@ -22,41 +24,70 @@ namespace ltn
     }
 
     /**
-     * `blockdiag(M_FF, I)`: the free rows of @p model's matrix without their
-     * entries in the columns of @p outside, and identity rows there.
+     * Per column of @p model's matrix (its Epetra column map, local
+     * numbers): whether @p set, owned by this or another rank, holds it.
+     * Imported as Epetra's products import their vectors' entries.
      */
-    TrilinosWrappers::SparseMatrix
-    free_block_matrix(const DiscreteModel &model, const IndexSet &outside)
+    std::vector<bool>
+    column_flags(const DiscreteModel &model, const IndexSet &set)
     {
-      // Which columns the owned rows reach are free, ghosts included.
-      TrilinosWrappers::MPI::Vector owned_flags(model.owned,
-                                                model.communicator);
-      for (const index i : model.owned)
-        owned_flags(i) = outside.is_element(i) ? 0. : 1.;
-      owned_flags.compress(VectorOperation::insert);
-      TrilinosWrappers::MPI::Vector free(model.owned,
-                                         model.relevant,
-                                         model.communicator);
-      free = owned_flags;
+      const Epetra_CrsMatrix &matrix = model.matrix.trilinos_matrix();
+      Epetra_Vector           owned(matrix.RowMap());
+      for (const index i : set)
+        owned[matrix.RowMap().LID(
+          static_cast<TrilinosWrappers::types::int_type>(i))] = 1.;
+      Epetra_Vector       columns(matrix.ColMap());
+      const Epetra_Import import(matrix.ColMap(), matrix.RowMap());
+      AssertThrow(columns.Import(owned, import, Insert) == 0,
+                  ExcMessage("importing the columns' flags failed"));
+      std::vector<bool> flags(columns.MyLength());
+      for (int c = 0; c < columns.MyLength(); ++c)
+        flags[c] = columns[c] != 0.;
+      return flags;
+    }
 
-      std::vector<index>  columns;
-      std::vector<double> values;
-      const auto          row = [&](const index i) {
+    /**
+     * The entries of @p model's matrix in the owned rows of @p rows and the
+     * columns @p columns flags (column_flags()) into @p matrix; with
+     * @p identity_elsewhere the other rows are identity rows, else empty.
+     */
+    void
+    entries_of(const DiscreteModel            &model,
+               const IndexSet                 &rows,
+               const std::vector<bool>        &columns_flags,
+               const bool                      identity_elsewhere,
+               TrilinosWrappers::SparseMatrix &matrix)
+    {
+      const Epetra_CrsMatrix &epetra = model.matrix.trilinos_matrix();
+      std::vector<index>      columns;
+      std::vector<double>     values;
+      const auto              row = [&](const index i) {
         columns.clear();
         values.clear();
-        if (outside.is_element(i))
+        if (!rows.is_element(i))
           {
-            columns.push_back(i);
-            values.push_back(1.);
+            if (identity_elsewhere)
+              {
+                columns.push_back(i);
+                values.push_back(1.);
+              }
             return;
           }
-        for_each_in_row(model.matrix, i, [&](const index j, const double a) {
-          if (free(j) != 0.)
+        int     n            = 0;
+        double *row_values   = nullptr;
+        int    *local_column = nullptr;
+        epetra.ExtractMyRowView(
+          epetra.RowMap().LID(
+            static_cast<TrilinosWrappers::types::int_type>(i)),
+          n,
+          row_values,
+          local_column);
+        for (int k = 0; k < n; ++k)
+          if (columns_flags[local_column[k]])
             {
-              columns.push_back(j);
-              values.push_back(a);
+              columns.push_back(epetra.ColMap().GID(local_column[k]));
+              values.push_back(row_values[k]);
             }
-        });
       };
 
       TrilinosWrappers::SparsityPattern pattern(model.owned,
@@ -68,15 +99,14 @@ namespace ltn
           pattern.add_entries(i, columns.begin(), columns.end());
         }
       pattern.compress();
-      TrilinosWrappers::SparseMatrix matrix;
       matrix.reinit(pattern);
       for (const index i : model.owned)
         {
           row(i);
-          matrix.set(i, columns, values);
+          if (!columns.empty())
+            matrix.set(i, columns, values);
         }
       matrix.compress(VectorOperation::insert);
-      return matrix;
     }
   } // namespace
 
@@ -87,9 +117,10 @@ namespace ltn
     , outside(model.controls)
     // The same choice on every rank: one MUMPS instance factorizes for all.
     , free_block_only(model.symmetric_free_block &&
-                      Utilities::MPI::max(model.eliminated.n_elements() +
-                                            model.constrained.n_elements(),
+                      Utilities::MPI::max(model.eliminated.n_elements(),
                                           model.communicator) == 0)
+    , any_constrained(Utilities::MPI::max(model.constrained.n_elements(),
+                                          model.communicator) > 0)
   {
     AssertThrow(!model.matrix_free,
                 ExcMessage("a direct solver needs the assembled matrix"));
@@ -97,17 +128,35 @@ namespace ltn
     const DirectSolver::Ordering ordering =
       model.mesh_couplings ? DirectSolver::Ordering::nested_dissection :
                              DirectSolver::Ordering::minimum_degree;
+    if (!free_block_only)
+      {
+        direct = std::make_unique<DirectSolver>(model.matrix,
+                                                0.5,
+                                                DirectSolver::Symmetry::general,
+                                                ordering);
+        return;
+      }
+
+    // F: the owned rows that are neither outside nor constrained.
+    free = model.owned;
+    free.subtract_set(outside);
+    free.subtract_set(model.constrained);
+    IndexSet not_outside = model.owned;
+    not_outside.subtract_set(outside);
+    IndexSet not_constrained = model.owned;
+    not_constrained.subtract_set(model.constrained);
+    entries_of(
+      model, not_outside, column_flags(model, outside), false, to_outside);
+    entries_of(model,
+               model.constrained,
+               column_flags(model, not_constrained),
+               false,
+               constraints);
     // The free block's matrix goes once it is factorized.
-    direct = free_block_only ?
-               std::make_unique<DirectSolver>(
-                 free_block_matrix(model, outside),
-                 0.5,
-                 DirectSolver::Symmetry::positive_definite,
-                 ordering) :
-               std::make_unique<DirectSolver>(model.matrix,
-                                              0.5,
-                                              DirectSolver::Symmetry::general,
-                                              ordering);
+    TrilinosWrappers::SparseMatrix free_block;
+    entries_of(model, free, column_flags(model, free), true, free_block);
+    direct = std::make_unique<DirectSolver>(
+      free_block, 0.5, DirectSolver::Symmetry::positive_definite, ordering);
   }
 
 
@@ -124,12 +173,41 @@ namespace ltn
   ModelDirectSolver::free_block_rhs(
     const TrilinosWrappers::MPI::Vector &b) const
   {
-    const TrilinosWrappers::MPI::Vector t = restricted_to(b, outside);
-    TrilinosWrappers::MPI::Vector       rhs(b), product(b);
-    model.matrix.vmult(product, t);
+    TrilinosWrappers::MPI::Vector rhs(b), product(b);
+    to_outside.vmult(product, restricted_to(b, outside));
     rhs -= product;
-    rhs += t;
     return rhs;
+  }
+
+
+
+  TrilinosWrappers::MPI::Vector
+  ModelDirectSolver::free_block_transposed_rhs(
+    const TrilinosWrappers::MPI::Vector &g) const
+  {
+    if (!any_constrained)
+      return g;
+    TrilinosWrappers::MPI::Vector product(g);
+    constraints.Tvmult(product, restricted_to(g, model.constrained));
+    TrilinosWrappers::MPI::Vector rhs(g);
+    rhs -= restricted_to(product, free);
+    return rhs;
+  }
+
+
+
+  void
+  ModelDirectSolver::complete_constrained(
+    TrilinosWrappers::MPI::Vector       &x,
+    const TrilinosWrappers::MPI::Vector &b) const
+  {
+    if (!any_constrained)
+      return;
+    TrilinosWrappers::MPI::Vector product(x);
+    constraints.vmult(product, x);
+    for (const index h : model.constrained)
+      x(h) = static_cast<double>(b(h)) - static_cast<double>(product(h));
+    x.compress(VectorOperation::insert);
   }
 
 
@@ -137,10 +215,9 @@ namespace ltn
   void
   ModelDirectSolver::complete_transposed(TrilinosWrappers::MPI::Vector &y) const
   {
-    TrilinosWrappers::MPI::Vector y_free(y);
-    y_free -= restricted_to(y, outside);
+    // to_outside has no rows O: y_O does not enter.
     TrilinosWrappers::MPI::Vector product(y);
-    model.matrix.Tvmult(product, y_free);
+    to_outside.Tvmult(product, y);
     for (const index i : outside)
       {
         const double value = y(i);
@@ -166,11 +243,14 @@ namespace ltn
       }
     if (transpose)
       {
-        direct->solve(x, b);
+        direct->solve(x, free_block_transposed_rhs(b));
         complete_transposed(x);
       }
     else
-      direct->solve(x, free_block_rhs(b));
+      {
+        direct->solve(x, free_block_rhs(b));
+        complete_constrained(x, b);
+      }
   }
 
 
@@ -185,17 +265,16 @@ namespace ltn
         direct->solve(x, b, transpose);
         return;
       }
-    if (transpose)
-      {
-        direct->solve(x, b, false);
-        for (auto &y : x)
-          complete_transposed(y);
-        return;
-      }
     std::vector<TrilinosWrappers::MPI::Vector> rhs;
     rhs.reserve(b.size());
     for (const auto &column : b)
-      rhs.push_back(free_block_rhs(column));
+      rhs.push_back(transpose ? free_block_transposed_rhs(column) :
+                                free_block_rhs(column));
     direct->solve(x, rhs, false);
+    for (unsigned int j = 0; j < x.size(); ++j)
+      if (transpose)
+        complete_transposed(x[j]);
+      else
+        complete_constrained(x[j], b[j]);
   }
 } // namespace ltn

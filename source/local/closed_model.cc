@@ -128,11 +128,11 @@ namespace ltn
     model.matrix.compress(VectorOperation::insert);
     model.rhs.compress(VectorOperation::insert);
     model.constrained = hanging;
-    // Both local problems' bilinear forms are symmetric, and the controls
-    // and Dirichlet data pin the rigid motions: without hanging-node rows the
-    // free block is symmetric positive definite.
-    model.symmetric_free_block =
-      Utilities::MPI::max(hanging.n_elements(), model.communicator) == 0;
+    // Both local problems' bilinear forms are symmetric, the assembly
+    // condensed the hanging nodes (their columns are zero off the diagonal),
+    // and the controls and Dirichlet data pin the rigid motions: the free
+    // block without the hanging nodes' rows is symmetric positive definite.
+    model.symmetric_free_block = true;
   }
 
 

@@ -105,13 +105,20 @@ namespace ltn
                            "components, the pressure one"));
     reinit_local_model(dof_handler, hanging_nodes, model);
 
-    const FEValuesExtractors::Vector     displacement(0);
+    // The stiffness's integrand is a product of two gradients, of degree
+    // 2p in each coordinate on the axis-parallel box cells of LtN's meshes:
+    // p + 1 Gauss points per direction integrate it exactly. The loads get
+    // one point more.
+    const QGauss<dim>                    stiffness_quadrature(fe.degree + 1);
     const QGauss<dim>                    quadrature(fe.degree + 2);
     const QGauss<dim - 1>                face_quadrature(fe.degree + 2);
+    FEValues<dim>                        stiffness_values(fe,
+                                   stiffness_quadrature,
+                                   update_gradients | update_JxW_values);
     FEValues<dim>                        fe_values(fe,
                             quadrature,
-                            update_values | update_gradients |
-                              update_quadrature_points | update_JxW_values);
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
     FEFaceValues<dim>                    fe_face_values(fe,
                                      face_quadrature,
                                      update_values | update_normal_vectors |
@@ -119,41 +126,62 @@ namespace ltn
                                        update_JxW_values);
     const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(dofs_per_cell);
-    std::vector<SymmetricTensor<2, dim>> strains(dofs_per_cell);
-    std::vector<double>                  divergences(dofs_per_cell);
-    Vector<double>                       force(dim);
-    FullMatrix<double>                   cell_matrix(dofs_per_cell);
-    Vector<double>                       cell_rhs(dofs_per_cell);
+    // Each shape function has one nonzero component (FESystem of FE_Q):
+    // phi_i = g_i e_{c_i}, its gradient grad g_i.
+    std::vector<unsigned int> components(dofs_per_cell);
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      components[i] = fe.system_to_component_index(i).first;
+    std::vector<Tensor<1, dim>> gradients(dofs_per_cell);
+    Vector<double>              force(dim);
+    FullMatrix<double>          cell_matrix(dofs_per_cell);
+    Vector<double>              cell_rhs(dofs_per_cell);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
+          stiffness_values.reinit(cell);
           fe_values.reinit(cell);
           cell->get_dof_indices(dofs);
           cell_matrix = 0;
           cell_rhs    = 0;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          for (unsigned int q = 0; q < stiffness_quadrature.size(); ++q)
             {
-              const double JxW = fe_values.JxW(q);
+              const double JxW = stiffness_values.JxW(q);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                gradients[i] = stiffness_values.shape_grad(i, q);
+              // lambda div(phi_i) div(phi_j) + 2 mu eps(phi_i) : eps(phi_j)
+              // with div(phi_i) = (g_i)_{c_i} and
+              // 2 eps_i : eps_j = delta_{c_i c_j} g_i . g_j
+              //                   + (g_i)_{c_j} (g_j)_{c_i};
+              // the lower triangle here, the upper one after the cell's
+              // quadrature (the form is symmetric).
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
-                  strains[i] = fe_values[displacement].symmetric_gradient(i, q);
-                  divergences[i] = trace(strains[i]);
-                }
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                  cell_matrix(i, j) +=
-                    (lambda_value * divergences[i] * divergences[j] +
-                     2 * mu_value * (strains[i] * strains[j])) *
-                    JxW;
-
-              body_force.vector_value(fe_values.quadrature_point(q), force);
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  const unsigned int c = fe.system_to_component_index(i).first;
-                  cell_rhs(i) += force[c] * fe_values.shape_value(i, q) * JxW;
+                  const Tensor<1, dim> &g_i = gradients[i];
+                  const unsigned int    c_i = components[i];
+                  for (unsigned int j = 0; j <= i; ++j)
+                    {
+                      const Tensor<1, dim> &g_j = gradients[j];
+                      const unsigned int    c_j = components[j];
+                      double value = lambda_value * g_i[c_i] * g_j[c_j] +
+                                     mu_value * g_i[c_j] * g_j[c_i];
+                      if (c_i == c_j)
+                        value += mu_value * (g_i * g_j);
+                      cell_matrix(i, j) += value * JxW;
+                    }
                 }
             }
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              body_force.vector_value(fe_values.quadrature_point(q), force);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                cell_rhs(i) += force[components[i]] *
+                               fe_values.shape_value(i, q) * fe_values.JxW(q);
+            }
+
+          for (unsigned int i = 0; i < dofs_per_cell; ++i)
+            for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+              cell_matrix(i, j) = cell_matrix(j, i);
 
           for (const auto f : cell->face_indices())
             if (cell->face(f)->at_boundary() &&

@@ -339,7 +339,7 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
       CHECK(callbacks == iterations);
 
       // Panels and blocks of gradients of a few columns each (the scenes'
-      // 16 MB hold all of this test's): E formed block by block from its
+      // 64 MB hold all of this test's): E formed block by block from its
       // lower triangle, the panels entered at a column inside them.
       {
         const DeflationSpace small_blocks(deflation_columns(),

@@ -15,6 +15,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "lu_difference.h"
 #include "particle_layout.h"
 
 using namespace ltn;
@@ -47,14 +48,6 @@ namespace
                    std::abs(x * Sy - y * Sx) / (x.l2_norm() * Sy.l2_norm()));
       }
     return worst;
-  }
-
-  double
-  relative_difference(const TrilinosWrappers::MPI::Vector &reference,
-                      TrilinosWrappers::MPI::Vector        other)
-  {
-    other -= reference;
-    return other.linfty_norm() / reference.linfty_norm();
   }
 
   /**
@@ -161,42 +154,6 @@ namespace
         CHECK(outside < 1e-13);
       }
     check_solves(assembled.get_model(), matrix_free.get_model());
-  }
-
-  /**
-   * ModelDirectSolver against MUMPS's LU of the whole matrix: M x = b and
-   * M^T x = b for random b (outside the free block too), one at a time and
-   * together; returns the largest relative difference.
-   */
-  double
-  difference_to_lu(const DiscreteModel &model)
-  {
-    const ModelDirectSolver                    free_block(model);
-    const DirectSolver                         lu(model.matrix);
-    std::mt19937                               random(7);
-    std::vector<TrilinosWrappers::MPI::Vector> b;
-    for (unsigned int j = 0; j < 3; ++j)
-      b.push_back(random_vector(model, random));
-    double worst = 0;
-    for (const bool transpose : {false, true})
-      {
-        std::vector<TrilinosWrappers::MPI::Vector> together;
-        free_block.solve(together, b, transpose);
-        REQUIRE(together.size() == b.size());
-        for (unsigned int j = 0; j < b.size(); ++j)
-          {
-            auto reference = model.new_vector(), one = model.new_vector();
-            if (transpose)
-              lu.solve_transposed(reference, b[j]);
-            else
-              lu.solve(reference, b[j]);
-            free_block.solve(one, b[j], transpose);
-            worst = std::max({worst,
-                              relative_difference(reference, one),
-                              relative_difference(reference, together[j])});
-          }
-      }
-    return worst;
   }
 } // namespace
 

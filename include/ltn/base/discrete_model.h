@@ -195,13 +195,13 @@ namespace ltn
     IndexSet eliminated;
     /**
      * Is the block of the Schur complement `S` (SchurComplement) on the
-     * free degrees of freedom that are not `eliminated` symmetric positive
-     * definite, and so the surrogate's? Particle models' are (their
-     * operator is the Hessian of an energy): their solvers may then use CG
-     * on it, for `M` and `M^T` alike (doc/discretization.md, section 16).
-     * So are the FEM models' on a mesh without hanging nodes (symmetric
-     * bilinear forms), which a direct solver then factorizes alone
-     * (ModelDirectSolver, section 10).
+     * free degrees of freedom that are neither `eliminated` nor
+     * `constrained` symmetric positive definite, and so the surrogate's?
+     * Particle models' are (their operator is the Hessian of an energy):
+     * their solvers may then use CG on it, for `M` and `M^T` alike
+     * (doc/discretization.md, section 16). So are the FEM models'
+     * (symmetric bilinear forms, hanging nodes condensed), which a direct
+     * solver then factorizes alone (ModelDirectSolver, section 10).
      */
     bool symmetric_free_block = false;
     /**

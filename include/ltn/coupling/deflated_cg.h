@@ -112,7 +112,7 @@ namespace ltn
      */
     DeflationSpace(std::vector<Column>    Z,
                    const NormalEquations &equations,
-                   std::size_t            block_bytes = std::size_t(16) << 20);
+                   std::size_t            block_bytes = std::size_t(64) << 20);
 
     /** Not copyable: a copied LAPACKFullMatrix forgets its factorization. */
     DeflationSpace(const DeflationSpace &) = delete;
