@@ -201,8 +201,7 @@ namespace ltn
                                        fe_face_values.normal_vector(q));
                     for (unsigned int i = 0; i < dofs_per_cell; ++i)
                       {
-                        const unsigned int c =
-                          fe.system_to_component_index(i).first;
+                        const unsigned int c = components[i];
                         if (!fixed[c])
                           cell_rhs(i) += t[c] *
                                          fe_face_values.shape_value(i, q) *
