@@ -137,6 +137,33 @@ namespace ltn
         return;
       }
 
+    // The solves rely on the condensed columns: entries in the columns C
+    // only on their diagonal, 1.
+    if (any_constrained)
+      {
+        const std::vector<bool> in_c   = column_flags(model, model.constrained);
+        const Epetra_CrsMatrix &epetra = model.matrix.trilinos_matrix();
+        for (int i = 0; i < epetra.NumMyRows(); ++i)
+          {
+            int     n       = 0;
+            double *values  = nullptr;
+            int    *columns = nullptr;
+            epetra.ExtractMyRowView(i, n, values, columns);
+            for (int k = 0; k < n; ++k)
+              if (in_c[columns[k]])
+                {
+                  const bool diagonal =
+                    epetra.ColMap().GID(columns[k]) == epetra.RowMap().GID(i);
+                  AssertThrow(values[k] == (diagonal ? 1. : 0.),
+                              ExcMessage(
+                                "a hanging node's column holds entries off "
+                                "its diagonal: the assembly did not condense "
+                                "it, and its free block cannot be factorized "
+                                "alone"));
+                }
+          }
+      }
+
     // F: the owned rows that are neither outside nor constrained.
     free = model.owned;
     free.subtract_set(outside);
@@ -173,8 +200,9 @@ namespace ltn
   ModelDirectSolver::free_block_rhs(
     const TrilinosWrappers::MPI::Vector &b) const
   {
+    // to_outside's columns are O: b_O alone enters.
     TrilinosWrappers::MPI::Vector rhs(b), product(b);
-    to_outside.vmult(product, restricted_to(b, outside));
+    to_outside.vmult(product, b);
     rhs -= product;
     return rhs;
   }
@@ -187,8 +215,9 @@ namespace ltn
   {
     if (!any_constrained)
       return g;
+    // constraints' rows are C: g_C alone enters.
     TrilinosWrappers::MPI::Vector product(g);
-    constraints.Tvmult(product, restricted_to(g, model.constrained));
+    constraints.Tvmult(product, g);
     TrilinosWrappers::MPI::Vector rhs(g);
     rhs -= restricted_to(product, free);
     return rhs;

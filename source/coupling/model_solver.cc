@@ -68,9 +68,12 @@ namespace ltn
     , settings(settings)
     // CG's preconditioner acts on the free block's entries alone, which
     // only the particle models' lattice surrogate offers: the FEM models
-    // keep GMRES.
+    // keep GMRES. CG's free block keeps the constraint rows of hanging
+    // nodes, which are not symmetric.
     , use_cg(settings.iterative && settings.conjugate_gradients &&
-             model.symmetric_free_block && model.surrogate.m() > 0)
+             model.symmetric_free_block && model.surrogate.m() > 0 &&
+             Utilities::MPI::max(model.constrained.n_elements(),
+                                 model.communicator) == 0)
     , tolerance(settings.relative_tolerance)
     , control_dofs(model.controls.begin(), model.controls.end())
   {

@@ -127,7 +127,7 @@ namespace ltn
     const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
     std::vector<types::global_dof_index> dofs(dofs_per_cell);
     // Each shape function has one nonzero component (FESystem of FE_Q):
-    // phi_i = g_i e_{c_i}, its gradient grad g_i.
+    // phi_i = s_i e_{c_i}; g_i = grad s_i below.
     std::vector<unsigned int> components(dofs_per_cell);
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       components[i] = fe.system_to_component_index(i).first;

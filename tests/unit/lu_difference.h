@@ -6,6 +6,8 @@
 #include <ltn/coupling/direct_solver.h>
 #include <ltn/coupling/model_direct_solver.h>
 
+#include <catch2/catch.hpp>
+
 #include <algorithm>
 #include <random>
 #include <vector>

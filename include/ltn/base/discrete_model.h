@@ -199,9 +199,10 @@ namespace ltn
      * `constrained` symmetric positive definite, and so the surrogate's?
      * Particle models' are (their operator is the Hessian of an energy):
      * their solvers may then use CG on it, for `M` and `M^T` alike
-     * (doc/discretization.md, section 16). So are the FEM models'
-     * (symmetric bilinear forms, hanging nodes condensed), which a direct
-     * solver then factorizes alone (ModelDirectSolver, section 10).
+     * (doc/discretization.md, section 16; SchurComplement's free block
+     * keeps constrained rows, so not where there are any). So are the FEM
+     * models' (symmetric bilinear forms, hanging nodes condensed), which a
+     * direct solver then factorizes alone (ModelDirectSolver, section 10).
      */
     bool symmetric_free_block = false;
     /**

@@ -108,7 +108,8 @@ namespace ltn
 
     /**
      * @p block_bytes bounds a panel of states and a block of the gradients
-     * `E` is formed from (a few MB: never all of a model's states at once).
+     * `E` is formed from (tens of MB: never all of a model's states at
+     * once).
      */
     DeflationSpace(std::vector<Column>    Z,
                    const NormalEquations &equations,
@@ -160,8 +161,8 @@ namespace ltn
       std::size_t local_size = 0;
       /**
        * The states in panels of `panel_width` columns (the last one may be
-       * narrower), column-major with `local_size` rows: a panel is a few MB,
-       * never the whole of a model's states, which would have to exist
+       * narrower), column-major with `local_size` rows: a panel is tens of
+       * MB, never the whole of a model's states, which would have to exist
        * beside their vectors while they are packed.
        */
       unsigned int                     panel_width = 1;

@@ -40,7 +40,8 @@ namespace ltn
   public:
     explicit ModelDirectSolver(const DiscreteModel &model);
 
-    /** Solve `M x = b` (@p transpose: `M^T x = b`). */
+    /** Solve `M x = b` (@p transpose: `M^T x = b`); @p x and @p b are
+     * distinct vectors (b_C is read after x is written). */
     void
     solve(TrilinosWrappers::MPI::Vector       &x,
           const TrilinosWrappers::MPI::Vector &b,
