@@ -23,40 +23,53 @@ namespace ltn
       return restricted;
     }
 
+    /** What a degree of freedom is to the free block's solves. */
+    enum Role : unsigned char
+    {
+      free_role        = 1,
+      constrained_role = 2,
+      outside_role     = 4
+    };
+
     /**
-     * Per column of @p model's matrix (its Epetra column map, local
-     * numbers): whether @p set, owned by this or another rank, holds it.
-     * Imported as Epetra's products import their vectors' entries.
+     * The role of each column of @p model's matrix (its Epetra column map,
+     * local numbers), owned by this rank or another: imported once, as
+     * Epetra's products import their vectors' entries.
      */
-    std::vector<bool>
-    column_flags(const DiscreteModel &model, const IndexSet &set)
+    std::vector<unsigned char>
+    column_roles(const DiscreteModel &model, const IndexSet &outside)
     {
       const Epetra_CrsMatrix &matrix = model.matrix.trilinos_matrix();
       Epetra_Vector           owned(matrix.RowMap());
-      for (const index i : set)
+      for (const index i : model.owned)
         owned[matrix.RowMap().LID(
-          static_cast<TrilinosWrappers::types::int_type>(i))] = 1.;
+          static_cast<TrilinosWrappers::types::int_type>(i))] =
+          outside.is_element(i)           ? outside_role :
+          model.constrained.is_element(i) ? constrained_role :
+                                            free_role;
       Epetra_Vector       columns(matrix.ColMap());
       const Epetra_Import import(matrix.ColMap(), matrix.RowMap());
       AssertThrow(columns.Import(owned, import, Insert) == 0,
-                  ExcMessage("importing the columns' flags failed"));
-      std::vector<bool> flags(columns.MyLength());
+                  ExcMessage("importing the columns' roles failed"));
+      std::vector<unsigned char> roles(columns.MyLength());
       for (int c = 0; c < columns.MyLength(); ++c)
-        flags[c] = columns[c] != 0.;
-      return flags;
+        roles[c] = static_cast<unsigned char>(columns[c]);
+      return roles;
     }
 
     /**
      * The entries of @p model's matrix in the owned rows of @p rows and the
-     * columns @p columns flags (column_flags()) into @p matrix; with
-     * @p identity_elsewhere the other rows are identity rows, else empty.
+     * columns whose role (column_roles()) is in the bits of @p kept_columns
+     * into @p matrix; with @p identity_elsewhere the other rows are
+     * identity rows, else empty.
      */
     void
-    entries_of(const DiscreteModel            &model,
-               const IndexSet                 &rows,
-               const std::vector<bool>        &columns_flags,
-               const bool                      identity_elsewhere,
-               TrilinosWrappers::SparseMatrix &matrix)
+    entries_of(const DiscreteModel              &model,
+               const IndexSet                   &rows,
+               const std::vector<unsigned char> &roles,
+               const unsigned int                kept_columns,
+               const bool                        identity_elsewhere,
+               TrilinosWrappers::SparseMatrix   &matrix)
     {
       const Epetra_CrsMatrix &epetra = model.matrix.trilinos_matrix();
       std::vector<index>      columns;
@@ -83,7 +96,7 @@ namespace ltn
           row_values,
           local_column);
         for (int k = 0; k < n; ++k)
-          if (columns_flags[local_column[k]])
+          if (roles[local_column[k]] & kept_columns)
             {
               columns.push_back(epetra.ColMap().GID(local_column[k]));
               values.push_back(row_values[k]);
@@ -137,31 +150,27 @@ namespace ltn
         return;
       }
 
+    const std::vector<unsigned char> roles = column_roles(model, outside);
     // The solves rely on the condensed columns: entries in the columns C
     // only on their diagonal, 1.
-    if (any_constrained)
+    const Epetra_CrsMatrix &epetra = model.matrix.trilinos_matrix();
+    for (int i = 0; any_constrained && i < epetra.NumMyRows(); ++i)
       {
-        const std::vector<bool> in_c   = column_flags(model, model.constrained);
-        const Epetra_CrsMatrix &epetra = model.matrix.trilinos_matrix();
-        for (int i = 0; i < epetra.NumMyRows(); ++i)
-          {
-            int     n       = 0;
-            double *values  = nullptr;
-            int    *columns = nullptr;
-            epetra.ExtractMyRowView(i, n, values, columns);
-            for (int k = 0; k < n; ++k)
-              if (in_c[columns[k]])
-                {
-                  const bool diagonal =
-                    epetra.ColMap().GID(columns[k]) == epetra.RowMap().GID(i);
-                  AssertThrow(values[k] == (diagonal ? 1. : 0.),
-                              ExcMessage(
-                                "a hanging node's column holds entries off "
-                                "its diagonal: the assembly did not condense "
-                                "it, and its free block cannot be factorized "
-                                "alone"));
-                }
-          }
+        int     n       = 0;
+        double *values  = nullptr;
+        int    *columns = nullptr;
+        epetra.ExtractMyRowView(i, n, values, columns);
+        for (int k = 0; k < n; ++k)
+          if (roles[columns[k]] == constrained_role)
+            {
+              const bool diagonal =
+                epetra.ColMap().GID(columns[k]) == epetra.RowMap().GID(i);
+              AssertThrow(values[k] == (diagonal ? 1. : 0.),
+                          ExcMessage(
+                            "a hanging node's column holds entries off its "
+                            "diagonal: the assembly did not condense it, and "
+                            "its free block cannot be factorized alone"));
+            }
       }
 
     // F: the owned rows that are neither outside nor constrained.
@@ -170,18 +179,16 @@ namespace ltn
     free.subtract_set(model.constrained);
     IndexSet not_outside = model.owned;
     not_outside.subtract_set(outside);
-    IndexSet not_constrained = model.owned;
-    not_constrained.subtract_set(model.constrained);
-    entries_of(
-      model, not_outside, column_flags(model, outside), false, to_outside);
+    entries_of(model, not_outside, roles, outside_role, false, to_outside);
     entries_of(model,
                model.constrained,
-               column_flags(model, not_constrained),
+               roles,
+               free_role | outside_role,
                false,
                constraints);
     // The free block's matrix goes once it is factorized.
     TrilinosWrappers::SparseMatrix free_block;
-    entries_of(model, free, column_flags(model, free), true, free_block);
+    entries_of(model, free, roles, free_role, true, free_block);
     direct = std::make_unique<DirectSolver>(
       free_block, 0.5, DirectSolver::Symmetry::positive_definite, ordering);
   }
