@@ -1,6 +1,7 @@
 """Error near the crack against wall time: coupled solves and all-peridynamic.
 
-usage: run.py [--ltn build/ltn] [--out DIR] [--scenes plate_2d bar_3d]
+usage: run.py [--ltn build/ltn] [--out DIR]
+              [--scenes plate_2d plate_2d_side_4 bar_3d]
               [--csv FILE] [--png FILE] [--reuse]
 
 For each scene, runs a sequence of resolutions (the particle spacing halves,
@@ -30,7 +31,8 @@ root = os.path.dirname(os.path.dirname(here))
 parser = argparse.ArgumentParser()
 parser.add_argument("--ltn", default=os.path.join(root, "build", "ltn"))
 parser.add_argument("--out", default=os.path.join(here, "runs"))
-parser.add_argument("--scenes", nargs="+", default=["plate_2d", "bar_3d"])
+parser.add_argument("--scenes", nargs="+",
+                    default=["plate_2d", "plate_2d_side_4", "bar_3d"])
 parser.add_argument("--csv", default=os.path.join(here, "results.csv"))
 parser.add_argument("--png", default=os.path.join(here, "error_vs_time.png"))
 parser.add_argument("--reuse", action="store_true",
@@ -76,12 +78,37 @@ full_space_gmres = (["Coupling/Method=full space gmres"] + scalable +
 # on either side, the overlap one such cell wide; the file's region leaves
 # five cells on every side. The same openings to 1e-7 at 1/160 and 1/320
 # (README, "The plate's nonlocal region sized to its crack").
-plate_region_sized_to_crack = [
-    "Geometry/Nonlocal region lower corner=0.65, 0.9",
-    "Geometry/Nonlocal region upper corner=1.35, 1.1",
-    "Geometry/Overlap width=0.05"]
+def plate_region_sized_to_crack(side=2):
+    """The sized region in the plate of side `side` (centred_plate())."""
+    c = side / 2
+    return ["Geometry/Nonlocal region lower corner=%g, %g" % (c - 0.35,
+                                                               c - 0.1),
+            "Geometry/Nonlocal region upper corner=%g, %g" % (c + 0.35,
+                                                               c + 0.1),
+            "Geometry/Overlap width=0.05"]
+
+
+def centred_plate(side):
+    """The scene's crack, loading and reference profile centred in a plate
+    of side `side` (the file's is 2): the crack, a quarter of the file's
+    plate wide, is an eighth of a plate of side 4."""
+    c = side / 2
+    return ["Geometry/Body upper corner=%g, %g" % (side, side),
+            "Geometry/Nonlocal region lower corner=%g, %g" % (c - 0.5,
+                                                               c - 0.25),
+            "Geometry/Nonlocal region upper corner=%g, %g" % (c + 0.5,
+                                                               c + 0.25),
+            "Cracks/Corners=%g, %g, %g, %g" % (c - 0.25, c, c + 0.25, c),
+            "Problem data/Boundary data=-1e-3*nu*(1 + nu)/E*(x - %g); "
+            "1e-3*(1 - nu^2)/E*(y - %g)" % (c, c),
+            "Postprocess/Reference crack opening=4*1e-3/Eprime*"
+            "sqrt(max(0.0625 - (x - %g)^2, 0))" % c]
+
+
 plate_prm = os.path.join(root, "parameter_files", "lps_plate_2d_crack.prm")
-plate_mesh_sizes = (0.05, 0.025, 0.0125, 0.00625, 0.003125)
+# 1/2560 for the coupled CG to 1e-6 alone: the all-peridynamic plate there
+# (80M unknowns, about 22 GB) does not fit in this machine's 24 GB.
+plate_mesh_sizes = (0.05, 0.025, 0.0125, 0.00625, 0.003125, 0.0015625)
 
 
 def prm_value(path, name):
@@ -124,9 +151,10 @@ def plate_fem_mesh_no_finer_than(coarsest):
 # The sized region on FEM cells no smaller than 1/80 near the overlap: at
 # 1/640 the opening moves by 1.8e-6 relative (0.2 % of the error) and the
 # FEM model has half the unknowns.
-plate_sized_fem_to_1_80 = (["Coupling/Method=reduced space cg"] +
-                           plate_region_sized_to_crack +
-                           [plate_fem_mesh_no_finer_than(0.0125)])
+def plate_sized_fem_to_1_80(side=2):
+    return (["Coupling/Method=reduced space cg"] +
+            plate_region_sized_to_crack(side) +
+            [plate_fem_mesh_no_finer_than(0.0125)])
 
 
 bar_prm = os.path.join(here, "cracked_bar_3d.prm")
@@ -188,16 +216,37 @@ scenes = {
                  [0, 1, 2, 3]),
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack": (["Coupling/Method=reduced space cg"] + scalable_cg +
-                      plate_region_sized_to_crack, [0, 1, 2, 3]),
+                      plate_region_sized_to_crack(), [0, 1, 2, 3]),
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack, FEM cells at least 0.0125":
-                (scalable_cg + plate_sized_fem_to_1_80, [0, 1, 2, 3]),
+                (scalable_cg + plate_sized_fem_to_1_80(), [0, 1, 2, 3]),
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack, FEM cells at least 0.0125, tolerance 1e-6":
-                (scalable_cg_loose + plate_sized_fem_to_1_80, [0, 1, 2, 3, 4]),
+                (scalable_cg_loose + plate_sized_fem_to_1_80(),
+                 [0, 1, 2, 3, 4, 5]),
             # 4.8 s and 23 s (one rank, a 2-core Xeon, 2026-12-06).
             "coupled, full space gmres, matrix-free":
                 (full_space_gmres, [0, 1]),
+        },
+    },
+    # The same crack in a plate twice as wide: the all-peridynamic solve
+    # covers four times the area, the coupled one the same particles.
+    "plate_2d_side_4": {
+        "prm": plate_prm,
+        "reference": "all peridynamic, cg matrix-free, tolerance 1e-8",
+        "equal-error line": "all peridynamic, cg matrix-free, tolerance 1e-6",
+        "levels": [["Discretization/Mesh size=%g" % h] + centred_plate(4)
+                   for h in plate_mesh_sizes],
+        "runs": {
+            # At 1/640: 19.8M unknowns, as the plate of side 2 at 1/1280.
+            "all peridynamic, cg matrix-free, tolerance 1e-8":
+                (all_peridynamic_cg_to[1e-8], [0, 1, 2, 3]),
+            "all peridynamic, cg matrix-free, tolerance 1e-6":
+                (all_peridynamic_cg_to[1e-6], [0, 1, 2, 3]),
+            "coupled, reduced space cg, cg matrix-free, region sized to the "
+            "crack, FEM cells at least 0.0125, tolerance 1e-6":
+                (scalable_cg_loose + plate_sized_fem_to_1_80(4),
+                 [0, 1, 2, 3, 4]),
         },
     },
     "bar_3d": {
