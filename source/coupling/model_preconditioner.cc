@@ -80,17 +80,18 @@ namespace ltn
     // aggregate apart while still giving each aggregate a coarse unknown
     // per component of the near null space.
     //
-    // Coarsened until at most 200 rows are left, not deal.II's 2000: the
-    // coarse levels of a 3D lattice are dense enough that the direct solve
-    // of a level of a thousand or more rows costs as much as the finest
-    // level's smoothing (the 3e4 bar of benchmarks/scaling, one rank: 17 %
-    // of the run in KLU's triangular solves; with the smaller coarsest
-    // level solves of 13.0 and 14.9 s against 17.7 and 19.6 s, 833 nonlocal
-    // CG iterations against 852).
+    // Coarsened until at most the model's surrogate_coarsest_rows are left:
+    // 200 on a 3D lattice, not deal.II's 2000, whose coarse levels are
+    // dense enough that the direct solve of a level of a thousand or more
+    // rows costs as much as the finest level's smoothing (the 3e4 bar of
+    // benchmarks/scaling, one rank: 17 % of the run in KLU's triangular
+    // solves; with the smaller coarsest level solves of 13.0 and 14.9 s
+    // against 17.7 and 19.6 s, 833 nonlocal CG iterations against 852).
     Teuchos::ParameterList              parameters;
     std::unique_ptr<Epetra_MultiVector> no_modes;
     data.set_parameters(parameters, no_modes, model.surrogate);
-    parameters.set("coarse: max size", 200);
+    parameters.set("coarse: max size",
+                   static_cast<int>(model.surrogate_coarsest_rows));
     // One Chebyshev sweep on the surrogate, not the three of the FEM
     // matrices: what the V-cycle misses of the particle model is mostly its
     // difference from the surrogate, not the surrogate's smooth error

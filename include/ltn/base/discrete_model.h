@@ -189,6 +189,14 @@ namespace ltn
     unsigned int node_dofs            = 1;
     unsigned int surrogate_components = 1;
     /**
+     * The most rows the surrogate's multigrid hierarchy leaves on its
+     * coarsest level, which it solves directly (doc/discretization.md,
+     * section 16): the coarse levels of a 3D lattice are dense enough that
+     * a direct solve of thousands of rows costs as much as the finest
+     * level's smoothing; a 2D lattice's are not.
+     */
+    unsigned int surrogate_coarsest_rows = 200;
+    /**
      * The owned degrees of freedom whose block of `M` is diagonal and
      * which a preconditioner eliminates first (the dilatation of LPS).
      */
