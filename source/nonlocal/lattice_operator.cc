@@ -797,12 +797,12 @@ namespace ltn
     // chains per row. The sums over each particle's components follow after
     // the last bond.
     //
-    // A group is two vectors' worth of particles where the sums fit in 12
-    // registers that way (two rows or fewer of 3 components: 2D LPS, the 3D
-    // dilatation), else one: each tiled row vector is then loaded once for
-    // two of the group's vectors, and each row has twice the chains. On the
-    // 2D plate the product took 17 % less time; with four vectors, no less
-    // than with two.
+    // A group is two vectors' worth of particles where its sums then fit in
+    // 12 registers (at most 6 sums for a group of one vector: the 2D
+    // products, the 3D dilatation rows), else one: each tiled row vector is
+    // then loaded once for two of the group's vectors, and each row has
+    // twice the chains. On the 2D plate the product took 17 % less time;
+    // with four vectors, no less than with two.
     using Lanes = double __attribute__((vector_size(lanes * sizeof(double))));
     constexpr int          n_rows = a1 - a0;
     constexpr unsigned int group  = (n_rows * n_c <= 6 ? 2 : 1) * lanes;

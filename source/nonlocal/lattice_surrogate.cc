@@ -116,11 +116,7 @@ namespace ltn
                               (diagonal * spacing * spacing / (2 * dim));
     model.node_dofs            = n_components;
     model.surrogate_components = n_field_components;
-    // 200 rows in 3D (the 3e4 bar of benchmarks/scaling: 17 % of a run in
-    // the coarsest level's solves with 2000); 2000, deal.II's default, in
-    // 2D, where one level fewer saves more (the plate of
-    // benchmarks/speed_accuracy at 1/1280: 5 % fewer nonlocal CG
-    // iterations).
+    // Measured (section 16, "The hierarchy's size"; ModelPreconditioner).
     model.surrogate_coarsest_rows = dim == 2 ? 2000 : 200;
   }
 
