@@ -18,9 +18,12 @@ import json
 import math
 import os
 import subprocess
+import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
+sys.path.insert(0, os.path.dirname(here))
+from plate_scene import centred_plate  # noqa: E402
 parser = argparse.ArgumentParser()
 parser.add_argument("--ltn", default=os.path.join(root, "build", "ltn"))
 parser.add_argument("--out", default=os.path.join(here, "runs"))
@@ -35,21 +38,6 @@ methods = {
     "coupled, full space direct": ["Coupling/Method=full space direct"],
     "coupled, reduced space cg": ["Coupling/Method=reduced space cg"],
 }
-
-
-def plate(size):
-    """The settings that centre the scene in a plate of side `size`."""
-    c = size / 2
-    return [
-        f"Geometry/Body upper corner={size}, {size}",
-        f"Geometry/Nonlocal region lower corner={c - 0.5}, {c - 0.25}",
-        f"Geometry/Nonlocal region upper corner={c + 0.5}, {c + 0.25}",
-        f"Cracks/Corners={c - 0.25}, {c}, {c + 0.25}, {c}",
-        f"Problem data/Boundary data=-1e-3*nu*(1 + nu)/E*(x - {c}); "
-        f"1e-3*(1 - nu^2)/E*(y - {c})",
-        f"Postprocess/Reference crack opening=4*1e-3/Eprime*"
-        f"sqrt(max(0.0625 - (x - {c})^2, 0))",
-    ]
 
 
 def openings(summary):
@@ -72,7 +60,7 @@ for size in options.sizes:
         for _ in range(options.repeat):
             command = [options.ltn, scene, "--output-dir", out,
                        "--set", "Output/Write VTU=false"]
-            for s in plate(size) + sets:
+            for s in centred_plate(size) + sets:
                 command += ["--set", s]
             subprocess.run(command, check=True, capture_output=True)
             summary = json.load(open(os.path.join(out, "summary.json")))

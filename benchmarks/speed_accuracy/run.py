@@ -25,9 +25,12 @@ import math
 import os
 import re
 import subprocess
+import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
+sys.path.insert(0, os.path.dirname(here))
+from plate_scene import centred_plate  # noqa: E402
 parser = argparse.ArgumentParser()
 parser.add_argument("--ltn", default=os.path.join(root, "build", "ltn"))
 parser.add_argument("--out", default=os.path.join(here, "runs"))
@@ -88,23 +91,6 @@ def plate_region_sized_to_crack(side=2):
             "Geometry/Overlap width=0.05"]
 
 
-def centred_plate(side):
-    """The scene's crack, loading and reference profile centred in a plate
-    of side `side` (the file's is 2): the crack, a quarter of the file's
-    plate wide, is an eighth of a plate of side 4."""
-    c = side / 2
-    return ["Geometry/Body upper corner=%g, %g" % (side, side),
-            "Geometry/Nonlocal region lower corner=%g, %g" % (c - 0.5,
-                                                               c - 0.25),
-            "Geometry/Nonlocal region upper corner=%g, %g" % (c + 0.5,
-                                                               c + 0.25),
-            "Cracks/Corners=%g, %g, %g, %g" % (c - 0.25, c, c + 0.25, c),
-            "Problem data/Boundary data=-1e-3*nu*(1 + nu)/E*(x - %g); "
-            "1e-3*(1 - nu^2)/E*(y - %g)" % (c, c),
-            "Postprocess/Reference crack opening=4*1e-3/Eprime*"
-            "sqrt(max(0.0625 - (x - %g)^2, 0))" % c]
-
-
 plate_prm = os.path.join(root, "parameter_files", "lps_plate_2d_crack.prm")
 # 1/2560 for the coupled CG to 1e-6 alone: the all-peridynamic plate there
 # (80M unknowns, about 22 GB) does not fit in this machine's 24 GB.
@@ -152,6 +138,8 @@ def plate_fem_mesh_no_finer_than(coarsest):
 # 1/640 the opening moves by 1.8e-6 relative (0.2 % of the error) and the
 # FEM model has half the unknowns.
 def plate_sized_fem_to_1_80(side=2):
+    """The sized region, in the plate of side `side`, on FEM cells no
+    smaller than 1/80."""
     return (["Coupling/Method=reduced space cg"] +
             plate_region_sized_to_crack(side) +
             [plate_fem_mesh_no_finer_than(0.0125)])
