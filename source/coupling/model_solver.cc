@@ -126,7 +126,6 @@ namespace ltn
   ModelSolver::solve(const bool                           transpose,
                      TrilinosWrappers::MPI::Vector       &x,
                      const TrilinosWrappers::MPI::Vector &b,
-                     WarmStart                           *last,
                      const bool                           with_eliminated) const
   {
     ++counts.solves;
@@ -143,9 +142,6 @@ namespace ltn
         x = 0.;
         return;
       }
-    if (last && last->rhs_norm > 0)
-      x.add((b * last->rhs) / (last->rhs_norm * last->rhs_norm),
-            last->solution);
     // The tolerance is on the true residual (GMRES: with right
     // preconditioning), relative to the free block's right-hand side:
     // solve_free_block sets it.
@@ -164,12 +160,6 @@ namespace ltn
                                tolerance);
       }
     counts.iterations += control.last_step();
-    if (last)
-      {
-        last->rhs      = b;
-        last->rhs_norm = b_norm;
-        last->solution = x;
-      }
   }
 
 
@@ -289,11 +279,11 @@ namespace ltn
     if (initial_guess)
       {
         TrilinosWrappers::MPI::Vector field = *initial_guess;
-        solve(false, field, rhs, nullptr);
+        solve(false, field, rhs);
         return field;
       }
     TrilinosWrappers::MPI::Vector field = model.new_vector();
-    solve(false, field, rhs, with_data ? nullptr : &last_forward);
+    solve(false, field, rhs);
     return field;
   }
 
@@ -326,7 +316,7 @@ namespace ltn
   {
     TrilinosWrappers::MPI::Vector multiplier = model.new_vector();
     // Only the entries at the controls are returned.
-    solve(true, multiplier, z, &last_adjoint, controls_eliminated);
+    solve(true, multiplier, z, controls_eliminated);
     return restrict_to_controls(multiplier);
   }
 
@@ -362,7 +352,7 @@ namespace ltn
                      const TrilinosWrappers::MPI::Vector &b) const
   {
     TrilinosWrappers::MPI::Vector x = model.new_vector();
-    solve(transpose, x, b, &last_general[transpose ? 1 : 0]);
+    solve(transpose, x, b);
     return x;
   }
 

@@ -62,7 +62,7 @@ namespace ltn
    * wall time (this rank's) of its solves, of which the iterative solver
    * spent some in products with the operator and some in its
    * preconditioner (the rest: vector operations, the Schur complement's
-   * reduction and recovery, warm starts).
+   * reduction and recovery).
    */
   struct ModelSolverStatistics
   {
@@ -93,9 +93,8 @@ namespace ltn
    * transposed equations (adjoint). The model's field for controls `theta`
    * solves `M x = r + S theta` (see DiscreteModel). The direct solver
    * factorizes `M` and `M^T` once. The iterative one builds their
-   * preconditioners once and starts each solve from the multiple of the
-   * previous solution that best fits the new right-hand side: consecutive
-   * solves of an outer Krylov method have correlated right-hand sides.
+   * preconditioners once and starts each solve from zero or from a given
+   * guess (doc/discretization.md, section 16, "Starting values").
    *
    * Controls are numbered `0 .. n_controls - 1` over all ranks, each rank
    * owning a contiguous range: those of its own control degrees of freedom,
@@ -121,7 +120,7 @@ namespace ltn
      * and fixed data enter, otherwise they are taken as zero (the linear part
      * of the control-to-state map). The iterative solver starts from
      * @p initial_guess if given (its values at the controls and the fixed
-     * data are replaced), else from the warm start.
+     * data are replaced), else from zero.
      */
     TrilinosWrappers::MPI::Vector
     forward(const TrilinosWrappers::MPI::Vector &theta,
@@ -157,9 +156,7 @@ namespace ltn
     extend_controls(const TrilinosWrappers::MPI::Vector &theta) const;
 
     /**
-     * `M^{-1} b` (@p transpose: `M^{-T} b`) for any right-hand side @p b,
-     * warm-started like forward() and adjoint() but from its own last solve
-     * of each kind.
+     * `M^{-1} b` (@p transpose: `M^{-T} b`) for any right-hand side @p b.
      */
     TrilinosWrappers::MPI::Vector
     solve(const bool transpose, const TrilinosWrappers::MPI::Vector &b) const;
@@ -177,18 +174,9 @@ namespace ltn
     statistics() const;
 
   private:
-    /** The last right-hand side and solution of one kind of solve. */
-    struct WarmStart
-    {
-      TrilinosWrappers::MPI::Vector rhs, solution;
-      /** The norm of `rhs`. */
-      double rhs_norm = 0;
-    };
-
     /**
      * Solve `M x = b` (@p transpose: `M^T x = b`); the iterative solver
-     * starts from @p x plus the best multiple of @p last's solution, if
-     * given, and replaces it with this solve's. Without
+     * starts from @p x. Without
      * @p with_eliminated the iterative solver leaves the eliminated entries
      * (DiscreteModel::eliminated) zero.
      */
@@ -196,7 +184,6 @@ namespace ltn
     solve(const bool                           transpose,
           TrilinosWrappers::MPI::Vector       &x,
           const TrilinosWrappers::MPI::Vector &b,
-          WarmStart                           *last,
           const bool                           with_eliminated = true) const;
 
     /**
@@ -227,8 +214,6 @@ namespace ltn
     std::unique_ptr<ModelDirectSolver>   direct;
     std::unique_ptr<ModelPreconditioner> preconditioner;
     std::unique_ptr<SchurComplement>     forward_system, adjoint_system;
-    mutable WarmStart                    last_forward, last_adjoint;
-    mutable std::array<WarmStart, 2>     last_general;
     mutable ModelSolverStatistics        counts;
   };
 } // namespace ltn
