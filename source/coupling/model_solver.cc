@@ -276,13 +276,8 @@ namespace ltn
     if (with_data)
       rhs += model.rhs;
 
-    if (initial_guess)
-      {
-        TrilinosWrappers::MPI::Vector field = *initial_guess;
-        solve(false, field, rhs);
-        return field;
-      }
-    TrilinosWrappers::MPI::Vector field = model.new_vector();
+    TrilinosWrappers::MPI::Vector field =
+      initial_guess ? *initial_guess : model.new_vector();
     solve(false, field, rhs);
     return field;
   }

@@ -176,9 +176,8 @@ namespace ltn
   private:
     /**
      * Solve `M x = b` (@p transpose: `M^T x = b`); the iterative solver
-     * starts from @p x. Without
-     * @p with_eliminated the iterative solver leaves the eliminated entries
-     * (DiscreteModel::eliminated) zero.
+     * starts from @p x. Without @p with_eliminated it leaves the eliminated
+     * entries (DiscreteModel::eliminated) zero.
      */
     void
     solve(const bool                           transpose,
