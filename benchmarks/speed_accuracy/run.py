@@ -196,7 +196,7 @@ scenes = {
                 (all_peridynamic + scalable, [0, 1, 2]),
             "all peridynamic, cg matrix-free":
                 (all_peridynamic + scalable_cg, [0, 1, 2, 3]),
-            # At 1/1280: 19.8M unknowns, 52 s and 5.4 GB on one rank.
+            # At 1/1280: 19.8M unknowns and 5.4 GB on one rank.
             "all peridynamic, cg matrix-free, tolerance 1e-8":
                 (all_peridynamic_cg_to[1e-8], [0, 1, 2, 3, 4]),
             # At 1/2560: 79M unknowns, about 2 minutes and 22 GB.
@@ -402,7 +402,8 @@ if os.path.exists(options.csv):
     with open(options.csv, newline="") as f:
         kept = [row for row in csv.DictReader(f)
                 if (row["scene"], row["run"]) not in ran]
-    rows = kept + rows
+    order = list(scenes)
+    rows = sorted(kept + rows, key=lambda row: order.index(row["scene"]))
 with open(options.csv, "w", newline="") as f:
     writer = csv.DictWriter(f, fieldnames=list(rows[0]))
     writer.writeheader()
