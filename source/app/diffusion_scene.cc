@@ -96,6 +96,12 @@ namespace ltn
                 "matrix-free",
                 "`assembled` in 1D (its nonlocal model is a finite element "
                 "weak form, not a particle lattice)");
+    check_input(
+      dim > 1 || coupling_parameters.controls.collar_layer_weight == 0,
+      "Coupling/Collar layer weight",
+      std::to_string(coupling_parameters.controls.collar_layer_weight),
+      "0 in 1D (the weight comes from the particle lattice's "
+      "surrogate of 2D and 3D models)");
     check_input(dim > 1 ||
                   !coupling_parameters.controls.surrogate_nonlocal_block,
                 "Coupling/Nonlocal control block",

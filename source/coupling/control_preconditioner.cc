@@ -6,12 +6,54 @@
 
 namespace ltn
 {
+  namespace
+  {
+    /**
+     * Per nonlocal control `i`, `c_i / max_j c_j`: `c_i` the weight of the
+     * bonds of its particle into `Omega_n` in the lattice surrogate, the
+     * column sum of `C` (DiscreteModel::surrogate_collar), the same for
+     * each component of a particle.
+     */
+    TrilinosWrappers::MPI::Vector
+    collar_reach(const DiscreteModel &model, const ModelSolver &solver)
+    {
+      AssertThrow(model.surrogate_collar.m() > 0,
+                  ExcMessage("Coupling/Collar layer weight needs a particle "
+                             "model's lattice surrogate (2D or 3D)"));
+      TrilinosWrappers::MPI::Vector ones(
+        model.surrogate_collar.locally_owned_range_indices(),
+        model.communicator);
+      ones = 1.;
+      TrilinosWrappers::MPI::Vector column_sums(
+        model.surrogate_collar.locally_owned_domain_indices(),
+        model.communicator);
+      model.surrogate_collar.Tvmult(column_sums, ones);
+      // The columns are partitioned like the owned nodes, whose degrees of
+      // freedom are node_dofs * node + c.
+      TrilinosWrappers::MPI::Vector at_dofs = model.new_vector();
+      for (std::size_t node = 0; node < column_sums.locally_owned_size();
+           ++node)
+        for (unsigned int c = 0; c < model.node_dofs; ++c)
+          at_dofs.begin()[model.node_dofs * node + c] =
+            column_sums.begin()[node];
+      TrilinosWrappers::MPI::Vector reach =
+        solver.restrict_to_controls(at_dofs);
+      const double largest = reach.linfty_norm();
+      if (largest > 0)
+        reach /= largest;
+      return reach;
+    }
+  } // namespace
+
+
+
   template <int dim>
   ControlPreconditioner<dim>::ControlPreconditioner(
     const ReducedHessian<dim>        &hessian,
     const std::optional<unsigned int> coarse_degree,
     const bool                        with_local_block,
-    const bool                        surrogate_nonlocal_block)
+    const bool                        surrogate_nonlocal_block,
+    const double                      collar_layer_weight)
   {
     const ModelSolver &nonlocal = *hessian.solvers[nonlocal_model];
     nonlocal_diagonal           = nonlocal.restrict_to_controls(
@@ -27,6 +69,16 @@ namespace ltn
         (nonlocal_diagonal(i) > 0 ? nonlocal_diagonal(i) : mean_diagonal) +
         hessian.system.alpha;
     nonlocal_diagonal.compress(VectorOperation::insert);
+    // The top modes of D_n^{-1} H_nn lie mostly on the layer whose bonds
+    // reach into Omega_n (section 19, "The collar layer's weight").
+    if (collar_layer_weight > 0)
+      {
+        const TrilinosWrappers::MPI::Vector reach =
+          collar_reach(*hessian.system.models[nonlocal_model], nonlocal);
+        for (const auto i : nonlocal_diagonal.locally_owned_elements())
+          nonlocal_diagonal(i) *= 1 + collar_layer_weight * reach(i);
+        nonlocal_diagonal.compress(VectorOperation::insert);
+      }
     if (surrogate_nonlocal_block)
       nonlocal_block = std::make_unique<const SurrogateHessianBlock>(
         *hessian.system.models[nonlocal_model],

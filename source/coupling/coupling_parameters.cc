@@ -84,6 +84,21 @@ namespace ltn
         "than the particles: on the 3e5 bar of benchmarks/scaling one rank "
         "held 9.7 GB after 11 minutes, where `diagonal` solves in 24 s).");
       prm.declare_entry(
+        "Collar layer weight",
+        "0",
+        Patterns::Double(0),
+        "s >= 0: with Nonlocal control block = diagonal, each nonlocal "
+        "control's weight in the Control preconditioner is multiplied by "
+        "1 + s c/c_max, c how strongly its particle's bonds reach into the "
+        "nonlocal region (the particle lattice's surrogate; 2D and 3D). "
+        "The outer iterations' largest eigenvalue grows with the overlap "
+        "width w over the horizon eps and lives on that layer; for LPS "
+        "with w/eps > 8, about 1.5 log2(w/(8 eps)) (3 at w/eps = 32: the "
+        "cracked plate at spacing 1/1280 took 20 outer iterations "
+        "instead of 23, at 1/2560 23 instead of 28). At w/eps <= 8, and "
+        "for nonlocal diffusion, keep 0: it costs iterations there "
+        "(doc/discretization.md, section 19).");
+      prm.declare_entry(
         "Time standalone solves",
         "false",
         Patterns::Bool(),
@@ -157,6 +172,15 @@ namespace ltn
           std::nullopt;
       controls.surrogate_nonlocal_block =
         prm.get("Nonlocal control block") == "surrogate extension";
+      controls.collar_layer_weight = prm.get_double("Collar layer weight");
+      check_input(controls.collar_layer_weight == 0 ||
+                    (control_preconditioner != "none" &&
+                     !controls.surrogate_nonlocal_block),
+                  "Coupling/Collar layer weight",
+                  prm.get("Collar layer weight"),
+                  "0 unless Coupling/Control preconditioner is `two level` "
+                  "or `block diagonal` with Nonlocal control block = "
+                  "diagonal (it weights that diagonal)");
       check_input(control_preconditioner != "none" ||
                     !controls.surrogate_nonlocal_block,
                   "Coupling/Nonlocal control block",

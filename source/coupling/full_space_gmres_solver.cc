@@ -32,11 +32,12 @@ namespace ltn
         std::min(model_solvers.relative_tolerance, 1e-12));
     CouplingSolution                 solution;
     Timer                            setup_timer;
-    const ControlPreconditioner<dim> controls(
-      ReducedHessian<dim>(system, solvers),
-      settings.coarse_degree,
-      true,
-      settings.surrogate_nonlocal_block);
+    const ControlPreconditioner<dim> controls(ReducedHessian<dim>(system,
+                                                                  solvers),
+                                              settings.coarse_degree,
+                                              true,
+                                              settings.surrogate_nonlocal_block,
+                                              settings.collar_layer_weight);
     for (const ModelSolver *solver : solvers)
       solver->set_relative_tolerance(model_solvers.relative_tolerance);
     solution.preconditioner_setup_seconds = setup_timer.wall_time();

@@ -167,7 +167,8 @@ namespace ltn
                 hessian,
                 std::nullopt,
                 !two_level,
-                controls.surrogate_nonlocal_block);
+                controls.surrogate_nonlocal_block,
+                controls.collar_layer_weight);
             // Each column kept in its own model's controls only: a full
             // control vector per local column would be mostly the nonlocal
             // controls' zeros (78 x 768k values on the 10^6 bar).

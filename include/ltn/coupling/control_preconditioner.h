@@ -27,6 +27,12 @@ namespace ltn
      * control block`).
      */
     bool surrogate_nonlocal_block = false;
+    /**
+     * `s` of `Coupling/Collar layer weight`: `D_n` scaled by
+     * `1 + s c_i / max_j c_j`, `c_i` the weight of control `i`'s bonds into
+     * `Omega_n` in the lattice surrogate; 0: `D_n` alone.
+     */
+    double collar_layer_weight = 0;
   };
 
   /**
@@ -53,6 +59,10 @@ namespace ltn
    *   `D_n^{-1} H_nn` grows like `w / eps`. With `surrogate_nonlocal_block`
    *   the block is instead the SurrogateHessianBlock, which models that
    *   part and is inverted exactly (doc/discretization.md, section 20).
+   *   With a `collar_layer_weight` `s > 0`, `D_n` is scaled by
+   *   `1 + s c_i / max_j c_j` on the collar layer whose bonds reach into
+   *   `Omega_n`, where the top modes of `D_n^{-1} H_nn` live (section 19,
+   *   "The collar layer's weight").
    */
   template <int dim>
   class ControlPreconditioner
@@ -71,8 +81,9 @@ namespace ltn
      */
     ControlPreconditioner(const ReducedHessian<dim>        &hessian,
                           const std::optional<unsigned int> coarse_degree,
-                          const bool with_local_block         = true,
-                          const bool surrogate_nonlocal_block = false);
+                          const bool   with_local_block         = true,
+                          const bool   surrogate_nonlocal_block = false,
+                          const double collar_layer_weight      = 0);
 
     void
     vmult(BlockVectorType &dst, const BlockVectorType &src) const;
