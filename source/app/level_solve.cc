@@ -44,6 +44,7 @@ namespace ltn
       }
     record.iterations                   = solution.iterations;
     record.residual                     = solution.residual;
+    record.true_residual                = solution.true_residual;
     record.explicit_controls            = solution.explicit_controls;
     record.coarse_modes                 = solution.coarse_modes;
     record.nonlocal_block_unknowns      = solution.nonlocal_block_unknowns;

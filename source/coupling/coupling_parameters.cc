@@ -35,7 +35,10 @@ namespace ltn
                         "1e-12",
                         Patterns::Double(0),
                         "Reduction of the residual at which the reduced-space "
-                        "CG or the full-space GMRES stops.");
+                        "CG (its recursive residual; its relaxed inner solves "
+                        "let the true one, reported as `solver.true "
+                        "residual` in summary.json, lie a few times above it) "
+                        "or the full-space GMRES stops.");
       prm.declare_entry("Maximum iterations",
                         "1000",
                         Patterns::Integer(1),

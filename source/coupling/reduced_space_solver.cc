@@ -35,6 +35,12 @@ namespace ltn
 
     /** The loosest tolerance of the local model's coarse states. */
     constexpr double local_coarse_state_tolerance = 1e-12;
+
+    /**
+     * The model solvers' tolerance for the adjoint solves of the true
+     * residual: its norm is reported, wanted to two digits.
+     */
+    constexpr double true_residual_tolerance = 1e-3;
   } // namespace
 
 
@@ -256,6 +262,23 @@ namespace ltn
       solution.fields[k] =
         hessian.solvers[k]->forward(theta.block(k), true, &states[k]);
     end_phase("final solves");
+    // The CG's residual is its recursion's; the relaxed products let the
+    // true one, H theta - b = the gradient at the final controls, drift
+    // from it (doc/discretization.md, section 19, "The true residual").
+    // Its adjoint solves cost a few CG iterations.
+    if (rhs_norm > 0)
+      {
+        for (const ModelSolver *solver : hessian.solvers)
+          solver->set_relative_tolerance(
+            std::max(true_residual_tolerance, inner.relative_tolerance));
+        BlockVectorType gradient = hessian.reduced_gradient(
+          system.mismatch(solution.fields[0], solution.fields[1]));
+        gradient.add(system.alpha, theta);
+        solution.true_residual = gradient.l2_norm() / rhs_norm;
+        for (const ModelSolver *solver : hessian.solvers)
+          solver->set_relative_tolerance(inner.relative_tolerance);
+        end_phase("true residual");
+      }
     solution.model_solvers = {
       {nonlocal_solver.statistics(), local_solver.statistics()}};
     if (time_standalone_solves)

@@ -52,6 +52,8 @@ namespace ltn
       j["solver"]["method"]     = level.solver_method;
       j["solver"]["iterations"] = level.iterations;
       j["solver"]["residual"]   = level.residual;
+      if (level.true_residual >= 0)
+        j["solver"]["true residual"] = level.true_residual;
       if (level.explicit_controls > 0 || level.coarse_modes > 0)
         {
           JsonValue &preconditioner = j["solver"]["control preconditioner"];

@@ -158,6 +158,12 @@ namespace ltn
     /** The relative residual the solver reached. */
     double residual = 0;
     /**
+     * The reduced-space CG's true relative residual at its final controls
+     * (`residual` is its recursion's, which relaxed inner solves let drift
+     * from it); negative where not computed.
+     */
+    double true_residual = -1;
+    /**
      * The controls whose Hessian block the preconditioner of the
      * reduced-space CG holds explicitly (ControlPreconditioner); 0 without.
      */

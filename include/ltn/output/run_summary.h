@@ -27,6 +27,8 @@ namespace ltn
     std::string             solver_method;
     unsigned int            iterations = 0;
     double                  residual   = 0;
+    /** CouplingSolution::true_residual (negative: not computed). */
+    double true_residual = -1;
     /**
      * The reduced-space preconditioner's explicit controls, coarse modes,
      * setup time.
