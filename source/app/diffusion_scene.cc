@@ -100,7 +100,7 @@ namespace ltn
       dim > 1 || coupling_parameters.controls.collar_layer_weight == 0,
       "Coupling/Collar layer weight",
       std::to_string(coupling_parameters.controls.collar_layer_weight),
-      "0 in 1D (the weight comes from the particle lattice's "
+      "0 or `auto` in 1D (the weight comes from the particle lattice's "
       "surrogate of 2D and 3D models)");
     check_input(dim > 1 ||
                   !coupling_parameters.controls.surrogate_nonlocal_block,

@@ -346,7 +346,8 @@ namespace ltn
             solution = solve_level(nonlocal ? &nonlocal->get_model() : nullptr,
                                    local ? &local->get_model() : nullptr,
                                    overlap,
-                                   coupling_parameters,
+                                   coupling_parameters.at_lps_level(
+                                     geometry.overlap_width / eps),
                                    record);
             timer.leave_subsection();
             solutions.push_back(solution);

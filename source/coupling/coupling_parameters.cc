@@ -4,6 +4,9 @@
 #include <ltn/coupling/full_space_gmres_solver.h>
 #include <ltn/coupling/reduced_space_solver.h>
 
+#include <cmath>
+#include <string>
+
 namespace ltn
 {
   void
@@ -88,19 +91,21 @@ namespace ltn
         "held 9.7 GB after 11 minutes, where `diagonal` solves in 24 s).");
       prm.declare_entry(
         "Collar layer weight",
-        "0",
-        Patterns::Double(0),
-        "s >= 0: with Nonlocal control block = diagonal, each nonlocal "
-        "control's weight in the Control preconditioner is multiplied by "
-        "1 + s c/c_max, c how strongly its particle's bonds reach into the "
-        "nonlocal region (the particle lattice's surrogate; 2D and 3D). "
-        "The outer iterations' largest eigenvalue grows with the overlap "
-        "width w over the horizon eps and lives on that layer; for LPS "
-        "with w/eps > 8, about 1.5 log2(w/(8 eps)) (3 at w/eps = 32: the "
-        "cracked plate at spacing 1/1280 took 20 outer iterations "
-        "instead of 23, at 1/2560 23 instead of 28). At w/eps <= 8, and "
-        "for nonlocal diffusion, keep 0: it costs iterations there "
-        "(doc/discretization.md, section 19).");
+        "auto",
+        Patterns::Anything(),
+        "s >= 0, or `auto`: with Nonlocal control block = diagonal, each "
+        "nonlocal control's weight in the Control preconditioner is "
+        "multiplied by 1 + s c/c_max, c how strongly its particle's bonds "
+        "reach into the nonlocal region (the particle lattice's surrogate; "
+        "2D and 3D). The outer iterations' largest eigenvalue grows with "
+        "the overlap width w over the horizon eps and lives on that layer. "
+        "`auto`: for LPS with w/eps > 8, 1.5 log2(w/(8 eps)) at each level "
+        "(3 at w/eps = 32: the cracked plate at spacing 1/1280 took 20 "
+        "outer iterations instead of 23, at 1/2560 23 instead of 28; the "
+        "3D bar at w/eps = 16 11 instead of 13); else 0, as for nonlocal "
+        "diffusion, where it costs iterations (doc/discretization.md, "
+        "section 19). The weight used goes to `solver.control "
+        "preconditioner` in summary.json.");
       prm.declare_entry(
         "Time standalone solves",
         "false",
@@ -175,15 +180,36 @@ namespace ltn
           std::nullopt;
       controls.surrogate_nonlocal_block =
         prm.get("Nonlocal control block") == "surrogate extension";
-      controls.collar_layer_weight = prm.get_double("Collar layer weight");
+      const std::string weight      = prm.get("Collar layer weight");
+      automatic_collar_layer_weight = weight == "auto";
+      controls.collar_layer_weight  = 0;
+      if (!automatic_collar_layer_weight)
+        {
+          std::size_t parsed = 0;
+          try
+            {
+              controls.collar_layer_weight = std::stod(weight, &parsed);
+            }
+          catch (const std::exception &)
+            {
+              parsed = 0;
+            }
+          check_input(parsed > 0 &&
+                        weight.find_first_not_of(" \t", parsed) ==
+                          std::string::npos &&
+                        controls.collar_layer_weight >= 0,
+                      "Coupling/Collar layer weight",
+                      weight,
+                      "`auto` or a number s >= 0");
+        }
       check_input(controls.collar_layer_weight == 0 ||
                     (control_preconditioner != "none" &&
                      !controls.surrogate_nonlocal_block),
                   "Coupling/Collar layer weight",
-                  prm.get("Collar layer weight"),
-                  "0 unless Coupling/Control preconditioner is `two level` "
-                  "or `block diagonal` with Nonlocal control block = "
-                  "diagonal (it weights that diagonal)");
+                  weight,
+                  "0 or `auto` unless Coupling/Control preconditioner is "
+                  "`two level` or `block diagonal` with Nonlocal control "
+                  "block = diagonal (it weights that diagonal)");
       check_input(control_preconditioner != "none" ||
                     !controls.surrogate_nonlocal_block,
                   "Coupling/Nonlocal control block",
@@ -242,6 +268,29 @@ namespace ltn
                 "`reduced space cg` or `full space gmres` with Nonlocal "
                 "model/Operator = matrix-free (the full-space direct solver "
                 "needs the assembled matrix)");
+  }
+
+
+
+  double
+  lps_collar_layer_weight(const double overlap_over_horizon)
+  {
+    return overlap_over_horizon > 8 ?
+             1.5 * std::log2(overlap_over_horizon / 8) :
+             0;
+  }
+
+
+
+  CouplingParameters
+  CouplingParameters::at_lps_level(const double overlap_over_horizon) const
+  {
+    CouplingParameters level = *this;
+    if (automatic_collar_layer_weight && controls.enabled &&
+        !controls.surrogate_nonlocal_block)
+      level.controls.collar_layer_weight =
+        lps_collar_layer_weight(overlap_over_horizon);
+    return level;
   }
 
 

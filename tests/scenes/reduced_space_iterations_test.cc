@@ -197,14 +197,14 @@ TEST_CASE("the two-level reduced-space CG converges with model solver "
 
 
 
-TEST_CASE("the collar layer's weight bounds the top of the outer CG's "
-          "spectrum and keeps its solution",
+TEST_CASE("the collar layer's weight `auto` bounds the top of the outer "
+          "CG's spectrum and keeps its solution",
           "[solvers][scenes]")
 {
   // The cracked plate with an overlap 16 horizons wide (doc §19, "The
   // collar layer's weight"): D_n misses the smooth part of H_nn there, and
-  // the largest Ritz value is 5.9; the weight of the recommended
-  // 1.5 log2(w / (8 eps)) = 1.5 takes it to 2.5.
+  // the largest Ritz value is 5.9; the weight `auto` gives LPS there,
+  // 1.5 log2(w / (8 eps)) = 1.5, takes it to 2.5.
   const std::vector<std::string> sets = {
     "Output/Write VTU=false",
     "Discretization/Mesh size=0.0125",
@@ -217,12 +217,14 @@ TEST_CASE("the collar layer's weight bounds the top of the outer CG's "
     "Coupling/Local model solver=direct",
     "Coupling/Relative tolerance=1e-8",
     "Coupling/Model solver tolerance=1e-10"};
-  std::vector<std::string> weighted = sets;
-  weighted.push_back("Coupling/Collar layer weight=1.5");
-  const SceneRun plain  = run_scene("lps_plate_2d_crack", sets);
-  const SceneRun layer  = run_scene("lps_plate_2d_crack", weighted);
+  std::vector<std::string> unweighted = sets;
+  unweighted.push_back("Coupling/Collar layer weight=0");
+  const SceneRun plain  = run_scene("lps_plate_2d_crack", unweighted);
+  const SceneRun layer  = run_scene("lps_plate_2d_crack", sets);
   const auto    &before = plain.summary.levels.front();
   const auto    &after  = layer.summary.levels.front();
+  CHECK(before.collar_layer_weight == 0);
+  CHECK(after.collar_layer_weight == Approx(1.5).epsilon(1e-12));
   INFO("largest Ritz value " << before.largest_ritz_value << " -> "
                              << after.largest_ritz_value << ", smallest "
                              << before.smallest_ritz_value << " -> "

@@ -24,6 +24,15 @@ namespace ltn
     void
     parse_parameters(ParameterHandler &prm);
 
+    /**
+     * These parameters at a level of an LPS scene whose overlap is
+     * @p overlap_over_horizon horizons wide: an `auto` Collar layer weight
+     * resolved there (lps_collar_layer_weight()), where the Control
+     * preconditioner weights the nonlocal controls' diagonal.
+     */
+    CouplingParameters
+    at_lps_level(const double overlap_over_horizon) const;
+
     /** Solve @p system with the selected method. */
     template <int dim>
     CouplingSolution
@@ -46,5 +55,18 @@ namespace ltn
     bool time_standalone_solves = false;
     /** The preconditioner of the reduced Hessian (ControlPreconditioner). */
     ControlPreconditionerSettings controls;
+    /**
+     * `Collar layer weight = auto`: `controls.collar_layer_weight` is 0
+     * until at_lps_level() sets it.
+     */
+    bool automatic_collar_layer_weight = true;
   };
+
+  /**
+   * The Collar layer weight `auto` gives LPS with an overlap
+   * @p overlap_over_horizon horizons wide (doc/discretization.md, section
+   * 19): 1.5 log2(w / (8 eps)) above 8, else 0.
+   */
+  double
+  lps_collar_layer_weight(const double overlap_over_horizon);
 } // namespace ltn

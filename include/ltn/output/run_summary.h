@@ -36,6 +36,8 @@ namespace ltn
     unsigned int explicit_controls            = 0;
     unsigned int coarse_modes                 = 0;
     double       preconditioner_setup_seconds = 0;
+    /** The Collar layer weight the Control preconditioner used. */
+    double collar_layer_weight = 0;
     /** CouplingSolution::nonlocal_block_unknowns. */
     types::global_dof_index nonlocal_block_unknowns = 0;
     /** CouplingSolution::standalone_seconds. */
