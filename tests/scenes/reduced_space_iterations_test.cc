@@ -56,9 +56,11 @@ TEST_CASE("reduced-space CG iterations at fixed eps/h over three halvings",
       CHECK(relative_difference(block_diagonal.solutions[l],
                                 two_level.solutions[l]) < 1e-8);
       CHECK(coarse <= with);
-      if (l > 0)
-        CHECK(with < 1.3 * levels[l - 1].iterations);
     }
+  // Over the three halvings, less than double (9 to 16 on one rank, 9 to
+  // 17 on two: the partition's round-off moves a count by one, which is
+  // why one halving's ratio is not asserted); unpreconditioned 13 times.
+  CHECK(levels.back().iterations < 2 * levels.front().iterations);
   CHECK(10 * levels.back().iterations <
         unpreconditioned.summary.levels.back().iterations);
 }
