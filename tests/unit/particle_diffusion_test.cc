@@ -71,7 +71,7 @@ namespace
 
 
 TEST_CASE("particle operator is exact on polynomials of degree 3 in 2D",
-          "[particles]")
+          "[particles][patch]")
 {
   const std::vector<std::pair<std::string, std::string>> polynomials = {
     {"1", "0"},
@@ -94,7 +94,7 @@ TEST_CASE("particle operator is exact on polynomials of degree 3 in 2D",
 
 
 TEST_CASE("particle operator is exact on polynomials of degree 3 in 3D",
-          "[particles]")
+          "[particles][patch]")
 {
   const std::vector<std::pair<std::string, std::string>> polynomials = {
     {"1", "0"},
