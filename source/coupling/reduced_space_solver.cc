@@ -27,20 +27,15 @@ namespace ltn
     constexpr double loosest_model_tolerance = 1e-1;
 
     /**
-     * The model solvers' tolerance for the norm of the right-hand side,
-     * which only scales the CG's stopping test and its relaxed inner
-     * tolerances.
+     * The model solvers' tolerance for a gradient wanted only for its norm,
+     * to a few digits: the right-hand side's, which scales the CG's
+     * stopping test and its relaxed inner tolerances, and the true
+     * residual's, which is reported.
      */
-    constexpr double rhs_norm_tolerance = 1e-3;
+    constexpr double norm_tolerance = 1e-3;
 
     /** The loosest tolerance of the local model's coarse states. */
     constexpr double local_coarse_state_tolerance = 1e-12;
-
-    /**
-     * The model solvers' tolerance for the adjoint solves of the true
-     * residual: its norm is reported, wanted to two digits.
-     */
-    constexpr double true_residual_tolerance = 1e-3;
   } // namespace
 
 
@@ -103,7 +98,7 @@ namespace ltn
       system.mismatch(states[0], states[1]);
     for (const ModelSolver *solver : hessian.solvers)
       solver->set_relative_tolerance(
-        std::max(rhs_norm_tolerance, inner.relative_tolerance));
+        std::max(norm_tolerance, inner.relative_tolerance));
     const double rhs_norm = hessian.reduced_gradient(data).l2_norm();
     for (const ModelSolver *solver : hessian.solvers)
       solver->set_relative_tolerance(inner.relative_tolerance);
@@ -278,7 +273,7 @@ namespace ltn
       {
         for (const ModelSolver *solver : hessian.solvers)
           solver->set_relative_tolerance(
-            std::max(true_residual_tolerance, inner.relative_tolerance));
+            std::max(norm_tolerance, inner.relative_tolerance));
         BlockVectorType gradient = hessian.reduced_gradient(
           system.mismatch(solution.fields[0], solution.fields[1]));
         gradient.add(system.alpha, theta);

@@ -99,16 +99,11 @@ namespace ltn
     for (const double a : stencil.coefficients())
       diagonal += 2 * a;
     // The stencil projected on an axis: the weight of the bonds that reach
-    // m layers along it, as many layers as the bonds reach (the collar's
-    // depth; the radius rounds eps/h, and at eps = 2.5h it is 3 where the
-    // bonds reach 2 layers).
-    std::vector<double> projected;
-    for (std::size_t k = 0; k < stencil.offsets().size(); ++k)
-      if (const int m = stencil.offsets()[k][0]; m > 0)
-        {
-          projected.resize(std::max<std::size_t>(projected.size(), m), 0.);
-          projected[m - 1] += stencil.coefficients()[k];
-        }
+    // m layers along it.
+    const std::vector<double> projected =
+      axis_projection(stencil.offsets(), [&](const std::size_t k) {
+        return stencil.coefficients()[k];
+      });
     assemble_lattice_surrogate<dim>(
       lattice,
       model.owned,

@@ -376,15 +376,11 @@ namespace ltn
     // displacement across axis 0 that varies along it, u = f(x_0) e_1,
     // changes no dilatation, and each bond reaching m layers along axis 0
     // weighs it by c_j (xi_j)_1^2 / |xi_j|^2.
-    std::vector<double> projected;
-    for (std::size_t k = 0; k < stencil.bonds().size(); ++k)
-      if (const int m = stencil.offsets()[k][0]; m > 0)
-        {
-          projected.resize(std::max<std::size_t>(projected.size(), m), 0.);
-          projected[m - 1] += stencil.weights()[k] * stencil.bonds()[k][1] *
-                              stencil.bonds()[k][1] /
-                              stencil.bonds()[k].norm_square();
-        }
+    const std::vector<double> projected =
+      axis_projection(stencil.offsets(), [&](const std::size_t k) {
+        return stencil.weights()[k] * stencil.bonds()[k][1] *
+               stencil.bonds()[k][1] / stencil.bonds()[k].norm_square();
+      });
     assemble_lattice_surrogate<dim>(
       lattice,
       owned_particles,

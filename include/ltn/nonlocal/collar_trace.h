@@ -1,5 +1,7 @@
 #pragma once
 
+#include <algorithm>
+#include <cstddef>
 #include <vector>
 
 namespace ltn
@@ -28,4 +30,26 @@ namespace ltn
    */
   std::vector<double>
   collar_trace_weights(const std::vector<double> &projected_weights);
+
+  /**
+   * A stencil's bonds projected on axis 0, the argument of
+   * collar_trace_weights(): bond `k`, whose offset @p offsets[k] reaches
+   * `m = offsets[k][0] > 0` layers along it, adds @p weight(k) to `w_m`.
+   * As many layers as the bonds reach, which is the collar's depth (a
+   * stencil's radius rounds eps/h: at eps = 2.5h it is 3 where the bonds
+   * reach 2 layers).
+   */
+  template <typename Offsets, typename Weight>
+  std::vector<double>
+  axis_projection(const Offsets &offsets, const Weight &weight)
+  {
+    std::vector<double> projected;
+    for (std::size_t k = 0; k < offsets.size(); ++k)
+      if (const int m = offsets[k][0]; m > 0)
+        {
+          projected.resize(std::max<std::size_t>(projected.size(), m), 0.);
+          projected[m - 1] += weight(k);
+        }
+    return projected;
+  }
 } // namespace ltn
