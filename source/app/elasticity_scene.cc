@@ -20,6 +20,50 @@ namespace ltn
 {
   namespace
   {
+    /**
+     * The opening fields of @p cracks for the coarse level (`Crack opening
+     * coarse fields`, doc/discretization.md, section 19): per crack and
+     * per direction t along it (orthonormal; its edges' in 3D), the
+     * displacement n (n.(x - c)) (t.(x - c))^2, n its normal, c its centre.
+     */
+    template <int dim>
+    std::vector<AffineProductField>
+    crack_opening_fields(const std::vector<Crack<dim>> &cracks)
+    {
+      const auto to_array = [](const Tensor<1, dim> &v) {
+        std::array<double, 3> a = {{0, 0, 0}};
+        for (unsigned int d = 0; d < dim; ++d)
+          a[d] = v[d];
+        return a;
+      };
+      std::vector<AffineProductField> fields;
+      for (const Crack<dim> &crack : cracks)
+        {
+          Point<dim>                  centre = crack.corners[0];
+          std::vector<Tensor<1, dim>> along;
+          for (unsigned int e = 1; e < dim; ++e)
+            {
+              Tensor<1, dim> edge = crack.corners[e] - crack.corners[0];
+              centre += 0.5 * edge;
+              for (const Tensor<1, dim> &t : along)
+                edge -= (edge * t) * t;
+              along.push_back(edge / edge.norm());
+            }
+          const Tensor<1, dim> normal = crack.normal();
+          // g.x + h = g.(x - c).
+          const auto about_centre = [&](const Tensor<1, dim> &g) {
+            return std::make_pair(to_array(g), -(g * centre));
+          };
+          for (const Tensor<1, dim> &t : along)
+            fields.push_back(
+              {to_array(normal),
+               {about_centre(normal), about_centre(t), about_centre(t)}});
+        }
+      return fields;
+    }
+
+
+
     /** "x=0.5, y=1" into (direction, coordinate) pairs. */
     template <int dim>
     std::vector<std::pair<unsigned int, double>>
@@ -347,7 +391,9 @@ namespace ltn
                                    local ? &local->get_model() : nullptr,
                                    overlap,
                                    coupling_parameters.at_lps_level(
-                                     geometry.overlap_width / eps),
+                                     geometry.overlap_width / eps,
+                                     crack_opening_fields(crack_set.cracks),
+                                     dim),
                                    record);
             timer.leave_subsection();
             solutions.push_back(solution);

@@ -86,15 +86,6 @@ namespace ltn
       return result;
     }
 
-    /** A term of a polynomial field: a multiple of a monomial in a component.
-     */
-    struct Term
-    {
-      unsigned int                component;
-      std::array<unsigned int, 3> exponents;
-      double                      coefficient;
-    };
-
     /**
      * A basis of the fields with @p n_components components whose every
      * component is a polynomial in @p dim variables of degree up to
@@ -104,13 +95,13 @@ namespace ltn
      * then the symmetric strains: elasticity models reproduce rotations
      * exactly, so the coarse states of these start from their exact values.
      */
-    std::vector<std::vector<Term>>
+    std::vector<std::vector<MonomialTerm>>
     polynomial_fields(const unsigned int dim,
                       const unsigned int degree,
                       const unsigned int n_components)
     {
-      std::vector<std::vector<Term>> fields;
-      const auto                     degree_of = [](const auto &exponents) {
+      std::vector<std::vector<MonomialTerm>> fields;
+      const auto degree_of = [](const auto &exponents) {
         return exponents[0] + exponents[1] + exponents[2];
       };
       const bool displacement = n_components == dim && dim > 1;
@@ -128,15 +119,16 @@ namespace ltn
             exponents[d]                          = 1;
             return exponents;
           };
-          std::vector<std::vector<Term>> linear;
+          std::vector<std::vector<MonomialTerm>> linear;
           for (unsigned int c = 0; c < dim; ++c)
             for (unsigned int d = c + 1; d < dim; ++d)
               linear.push_back({{c, x(d), 1.}, {d, x(c), -1.}});
           for (unsigned int c = 0; c < dim; ++c)
             for (unsigned int d = c; d < dim; ++d)
               linear.push_back(
-                c == d ? std::vector<Term>{{c, x(c), 1.}} :
-                         std::vector<Term>{{c, x(d), 1.}, {d, x(c), 1.}});
+                c == d ?
+                  std::vector<MonomialTerm>{{c, x(c), 1.}} :
+                  std::vector<MonomialTerm>{{c, x(d), 1.}, {d, x(c), 1.}});
           fields.insert(fields.begin() + n_components,
                         linear.begin(),
                         linear.end());
@@ -149,9 +141,10 @@ namespace ltn
 
   template <int dim>
   std::vector<PolynomialControlField>
-  polynomial_control_fields(const ReducedHessian<dim>       &hessian,
-                            const unsigned int               degree,
-                            const std::vector<unsigned int> &models)
+  polynomial_control_fields(const ReducedHessian<dim>             &hessian,
+                            const unsigned int                     degree,
+                            const std::vector<unsigned int>       &models,
+                            const std::vector<AffineProductField> &fields)
   {
     std::vector<PolynomialControlField> Z;
     const MPI_Comm communicator = hessian.system.communicator();
@@ -200,17 +193,35 @@ namespace ltn
         // Gram-Schmidt: the extensions are evaluated from these once, at the
         // end, instead of being updated at every projection, a pass over all
         // of the model's unknowns each.
-        const auto                       exponents   = monomials(dim, degree);
-        const std::size_t                n_monomials = exponents.size();
-        const std::size_t                first_of_model = Z.size();
+        std::vector<std::vector<MonomialTerm>> columns =
+          polynomial_fields(dim, degree, n_components);
+        // The given fields, displacements, after the monomials: expanded in
+        // the monomials' coordinates, to the degree of their products.
+        unsigned int highest_degree = degree;
+        if (n_components == dim && dim > 1)
+          {
+            std::array<double, 3> centre = {{0, 0, 0}};
+            for (unsigned int d = 0; d < dim; ++d)
+              centre[d] = 0.5 * (low[d] + high[d]);
+            for (const AffineProductField &field : fields)
+              {
+                columns.push_back(
+                  expand_in_frame(field, centre, half_width, dim));
+                highest_degree =
+                  std::max<unsigned int>(highest_degree, field.factors.size());
+              }
+          }
+        const auto        exponents      = monomials(dim, highest_degree);
+        const std::size_t n_monomials    = exponents.size();
+        const std::size_t first_of_model = Z.size();
         std::vector<std::vector<double>> coefficients;
-        for (const auto &field : polynomial_fields(dim, degree, n_components))
+        for (const auto &field : columns)
           {
             PolynomialControlField z{k, hessian.new_control_vector(), {}};
             std::vector<double>    column(n_components * n_monomials, 0.);
             // This rank's controls in the order of its control positions.
             TrilinosWrappers::MPI::Vector &controls = z.controls.block(k);
-            for (const Term &term : field)
+            for (const MonomialTerm &term : field)
               {
                 for (std::size_t i = 0; i < x.size(); ++i)
                   if (model.control_components[i] == term.component)
@@ -293,7 +304,8 @@ namespace ltn
   template std::vector<PolynomialControlField> polynomial_control_fields(  \
     const ReducedHessian<dim> &,                                           \
     unsigned int,                                                          \
-    const std::vector<unsigned int> &);                                    \
+    const std::vector<unsigned int> &,                                     \
+    const std::vector<AffineProductField> &);                              \
   template std::vector<TrilinosWrappers::MPI::Vector> unit_control_fields( \
     const ReducedHessian<dim> &, unsigned int);
   LTN_INSTANTIATE(1)

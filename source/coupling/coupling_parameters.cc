@@ -107,6 +107,23 @@ namespace ltn
         "section 19). The weight used goes to `solver.control "
         "preconditioner` in summary.json.");
       prm.declare_entry(
+        "Crack opening coarse fields",
+        "auto",
+        Patterns::Selection("auto|true|false"),
+        "Elasticity with `two level` in the reduced-space CG: add to the "
+        "coarse level, per crack, the nonlocal controls' displacement n "
+        "(n.x)(t.x)^2 about the crack's centre, n its normal and t each "
+        "direction along it: an opening that varies along the crack, "
+        "the slowest mode the polynomial fields leave in 2D "
+        "(doc/discretization.md, section 19). One nonlocal solve per field, "
+        "once; on the cracked plate of benchmarks/speed_accuracy the outer "
+        "iterations fall from 20 to 16 at spacing 1/1280, and the solve "
+        "takes 17 % less time. `auto`: in 2D only (the 3D bars of "
+        "benchmarks/scaling have no such slow mode: one outer iteration "
+        "fewer, for two solves more, 10 % more time on the 10^6 bar). The "
+        "number of fields goes to `solver.control preconditioner` in "
+        "summary.json.");
+      prm.declare_entry(
         "Time standalone solves",
         "false",
         Patterns::Bool(),
@@ -180,6 +197,10 @@ namespace ltn
           std::nullopt;
       controls.surrogate_nonlocal_block =
         prm.get("Nonlocal control block") == "surrogate extension";
+      const std::string crack_fields = prm.get("Crack opening coarse fields");
+      crack_opening_coarse_fields =
+        crack_fields == "auto" ? std::nullopt :
+                                 std::optional<bool>(crack_fields == "true");
       const std::string weight      = prm.get("Collar layer weight");
       automatic_collar_layer_weight = weight == "auto";
       controls.collar_layer_weight  = 0;
@@ -283,13 +304,19 @@ namespace ltn
 
 
   CouplingParameters
-  CouplingParameters::at_lps_level(const double overlap_over_horizon) const
+  CouplingParameters::at_lps_level(
+    const double                           overlap_over_horizon,
+    const std::vector<AffineProductField> &crack_fields,
+    const unsigned int                     dim) const
   {
     CouplingParameters level = *this;
     if (automatic_collar_layer_weight && controls.enabled &&
         !controls.surrogate_nonlocal_block)
       level.controls.collar_layer_weight =
         lps_collar_layer_weight(overlap_over_horizon);
+    if (controls.coarse_degree &&
+        crack_opening_coarse_fields.value_or(dim == 2))
+      level.controls.nonlocal_coarse_fields = crack_fields;
     return level;
   }
 

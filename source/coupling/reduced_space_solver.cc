@@ -180,8 +180,11 @@ namespace ltn
                 // at every particle: exact for rigid motions, and away from
                 // cracks for any linear field (doc/discretization.md,
                 // section 19).
-                for (auto &z : polynomial_control_fields(
-                       hessian, *controls.coarse_degree, {nonlocal_model}))
+                for (auto &z :
+                     polynomial_control_fields(hessian,
+                                               *controls.coarse_degree,
+                                               {nonlocal_model},
+                                               controls.nonlocal_coarse_fields))
                   Z.push_back({z.model,
                                z.controls.block(z.model),
                                std::move(z.extension)});

@@ -60,7 +60,8 @@ namespace ltn
           preconditioner["explicit controls"] = level.explicit_controls;
           preconditioner["coarse modes"]      = level.coarse_modes;
           preconditioner["setup seconds"] = level.preconditioner_setup_seconds;
-          preconditioner["collar layer weight"] = level.collar_layer_weight;
+          preconditioner["collar layer weight"]  = level.collar_layer_weight;
+          preconditioner["crack opening fields"] = level.crack_opening_fields;
           if (level.nonlocal_block_unknowns > 0)
             preconditioner["nonlocal block unknowns"] =
               level.nonlocal_block_unknowns;

@@ -1,6 +1,7 @@
 // The Collar layer weight `auto`: the LPS weight of doc/discretization.md,
 // section 19, per level, and only where the Control preconditioner weights
-// the nonlocal controls' diagonal.
+// the nonlocal controls' diagonal. The Crack opening coarse fields `auto`:
+// in 2D only, and only where there is a coarse level.
 
 #include <ltn/coupling/coupling_parameters.h>
 
@@ -59,4 +60,26 @@ TEST_CASE("`auto` resolves the collar layer weight per LPS level, a number "
   CHECK(parsed({{"Nonlocal control block", "surrogate extension"}})
           .at_lps_level(32)
           .controls.collar_layer_weight == 0);
+}
+
+TEST_CASE("`auto` adds the crack opening fields in 2D only, `true` and "
+          "`false` everywhere, and none without a coarse level",
+          "[solvers][unit]")
+{
+  const std::vector<AffineProductField> fields = {
+    {{{0, 1, 0}}, {{{{0, 1, 0}}, -1.}, {{{1, 0, 0}}, -1.}}}};
+  const CouplingParameters automatic = parsed({});
+  CHECK(automatic.at_lps_level(4, fields, 2)
+          .controls.nonlocal_coarse_fields.size() == 1);
+  CHECK(automatic.at_lps_level(4, fields, 3)
+          .controls.nonlocal_coarse_fields.empty());
+  CHECK(parsed({{"Crack opening coarse fields", "true"}})
+          .at_lps_level(4, fields, 3)
+          .controls.nonlocal_coarse_fields.size() == 1);
+  CHECK(parsed({{"Crack opening coarse fields", "false"}})
+          .at_lps_level(4, fields, 2)
+          .controls.nonlocal_coarse_fields.empty());
+  CHECK(parsed({{"Control preconditioner", "block diagonal"}})
+          .at_lps_level(4, fields, 2)
+          .controls.nonlocal_coarse_fields.empty());
 }

@@ -3,6 +3,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <ltn/coupling/affine_product_field.h>
 #include <ltn/coupling/reduced_hessian.h>
 
 #include <functional>
@@ -82,15 +83,17 @@ namespace ltn
    * The coarse modes of the two-level control preconditioner: per model in
    * @p models and per component of its field, the monomials of total degree
    * up to @p degree at its controls (coordinates centred and scaled to
-   * [-1, 1] over that model's controls), orthonormalized. The slowest modes
+   * [-1, 1] over that model's controls), then, where the model's field is a
+   * displacement, the given @p fields, orthonormalized. The slowest modes
    * of the block-diagonally preconditioned Hessian are such smooth fields,
    * which both models represent and the overlap barely tells apart.
    */
   template <int dim>
   std::vector<PolynomialControlField>
-  polynomial_control_fields(const ReducedHessian<dim>       &hessian,
-                            const unsigned int               degree,
-                            const std::vector<unsigned int> &models);
+  polynomial_control_fields(const ReducedHessian<dim>             &hessian,
+                            const unsigned int                     degree,
+                            const std::vector<unsigned int>       &models,
+                            const std::vector<AffineProductField> &fields = {});
 
   /** One unit vector per control of model @p k, in that model's controls. */
   template <int dim>

@@ -3,12 +3,14 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <ltn/coupling/affine_product_field.h>
 #include <ltn/coupling/control_coarse_space.h>
 #include <ltn/coupling/reduced_hessian.h>
 #include <ltn/coupling/surrogate_hessian_block.h>
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace ltn
 {
@@ -33,6 +35,12 @@ namespace ltn
      * `Omega_n` in the lattice surrogate; 0: `D_n` alone.
      */
     double collar_layer_weight = 0;
+    /**
+     * Displacement fields added to the nonlocal controls' polynomial
+     * columns of the reduced-space CG's coarse level (`Crack opening coarse
+     * fields`).
+     */
+    std::vector<AffineProductField> nonlocal_coarse_fields;
   };
 
   /**

@@ -6,7 +6,9 @@
 #include <ltn/coupling/coupling_system.h>
 #include <ltn/coupling/model_solver.h>
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace ltn
 {
@@ -28,10 +30,15 @@ namespace ltn
      * These parameters at a level of an LPS scene whose overlap is
      * @p overlap_over_horizon horizons wide: an `auto` Collar layer weight
      * resolved there (lps_collar_layer_weight()), where the Control
-     * preconditioner weights the nonlocal controls' diagonal.
+     * preconditioner weights the nonlocal controls' diagonal, and, where
+     * `Crack opening coarse fields` asks for them in @p dim dimensions and
+     * there is a coarse level, @p crack_fields (the scene's cracks' opening
+     * fields) added to its nonlocal columns.
      */
     CouplingParameters
-    at_lps_level(const double overlap_over_horizon) const;
+    at_lps_level(const double                           overlap_over_horizon,
+                 const std::vector<AffineProductField> &crack_fields = {},
+                 const unsigned int                     dim          = 2) const;
 
     /** Solve @p system with the selected method. */
     template <int dim>
@@ -60,6 +67,11 @@ namespace ltn
      * until at_lps_level() sets it.
      */
     bool automatic_collar_layer_weight = true;
+    /**
+     * `Crack opening coarse fields` (empty: `auto`, in 2D only):
+     * at_lps_level() adds the fields.
+     */
+    std::optional<bool> crack_opening_coarse_fields;
   };
 
   /**

@@ -38,6 +38,8 @@ namespace ltn
     double       preconditioner_setup_seconds = 0;
     /** The Collar layer weight the Control preconditioner used. */
     double collar_layer_weight = 0;
+    /** The crack opening fields among the coarse modes. */
+    unsigned int crack_opening_fields = 0;
     /** CouplingSolution::nonlocal_block_unknowns. */
     types::global_dof_index nonlocal_block_unknowns = 0;
     /** CouplingSolution::standalone_seconds. */
