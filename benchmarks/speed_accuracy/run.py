@@ -95,12 +95,18 @@ def plate_region_sized_to_crack(side=2):
 
 
 plate_prm = os.path.join(root, "parameter_files", "lps_plate_2d_crack.prm")
-plate_mesh_sizes = (0.05, 0.025, 0.0125, 0.00625, 0.003125, 0.0015625)
+# Spacings 1/80 to 1/2560, halving, and one between the last two, 1/1920
+# (level 5; a lattice that still fits the crack and the region): there the
+# weighted coupled plate's error is the all-peridynamic plate's at 1/2560,
+# its finest, so the two are compared at equal error, both measured.
+plate_mesh_sizes = (0.05, 0.025, 0.0125, 0.00625, 0.003125, 0.003125 / 1.5,
+                    0.0015625)
+plate_halving_levels = [0, 1, 2, 3, 4, 6]
 # The peak memory of the runs that need most of a 24 GB machine, measured
 # (one rank): each is skipped, with a message, where less is available.
 # The all-peridynamic plate at 1/2560 holds 79M unknowns.
 peak_memory_gb = {
-    ("plate_2d", "all peridynamic, cg matrix-free, tolerance 1e-6", 5): 22.2}
+    ("plate_2d", "all peridynamic, cg matrix-free, tolerance 1e-6", 6): 22.2}
 
 
 def available_memory_gb():
@@ -127,10 +133,10 @@ def lattice_on_mesh(mesh_size, spacing, horizon):
     """The settings that put particles of `spacing` and `horizon` on FEM
     cells of `mesh_size` near the nonlocal region (the file's ratios are to
     the mesh size)."""
-    return ["Discretization/Mesh size=%g" % mesh_size,
-            "Nonlocal model/Particle spacing to mesh size ratio=%g" %
+    return ["Discretization/Mesh size=%.12g" % mesh_size,
+            "Nonlocal model/Particle spacing to mesh size ratio=%.12g" %
             (spacing / mesh_size),
-            "Nonlocal model/Horizon to mesh size ratio=%g" %
+            "Nonlocal model/Horizon to mesh size ratio=%.12g" %
             (horizon / mesh_size)]
 
 
@@ -162,14 +168,19 @@ def plate_sized_fem_to_1_80(side=2):
             [plate_fem_mesh_no_finer_than(0.0125)])
 
 
-# `Coupling/Collar layer weight`: every run starts from 0, the default until
-# the thirteenth session, so that the curves measure what they measured
-# before; the weighted curves take `auto`, the default since (for LPS,
+# `Coupling/Collar layer weight` and `Coupling/Crack opening coarse fields`:
+# every run starts from 0 and `false`, the defaults until the thirteenth
+# session, so that the curves measure what they measured before; the
+# weighted curves take the weight `auto`, the default since (for LPS,
 # 1.5 log2(w / (8 eps)) where the overlap w is more than 8 horizons eps
-# wide: on the sized region from 1/640 on, 1.5, 3 and 4.5 at 1/640, 1/1280
-# and 1/2560).
-unweighted = ["Coupling/Collar layer weight=0"]
+# wide: on the sized region from 1/640 on, 1.5, 3, 3.9 and 4.5 at 1/640,
+# 1/1280, 1/1920 and 1/2560), and the last curves the crack opening field
+# too (the default in 2D since the fourteenth session, doc §19).
+baseline = ["Coupling/Collar layer weight=0",
+            "Coupling/Crack opening coarse fields=false"]
 collar_layer_weighted = ["Coupling/Collar layer weight=auto"]
+with_crack_opening_field = collar_layer_weighted + [
+    "Coupling/Crack opening coarse fields=true"]
 
 
 bar_prm = os.path.join(here, "cracked_bar_3d.prm")
@@ -202,7 +213,7 @@ scenes = {
         "prm": plate_prm,
         "reference": "all peridynamic, cg matrix-free, tolerance 1e-8",
         "equal-error line": "all peridynamic, cg matrix-free, tolerance 1e-6",
-        "levels": [["Discretization/Mesh size=%g" % h]
+        "levels": [["Discretization/Mesh size=%.12g" % h]
                    for h in plate_mesh_sizes],
         "runs": {
             "all peridynamic, gmres matrix-free":
@@ -214,7 +225,7 @@ scenes = {
                 (all_peridynamic_cg_to[1e-8], [0, 1, 2, 3, 4]),
             # At 1/2560: 79M unknowns, about 2 minutes and 22 GB.
             "all peridynamic, cg matrix-free, tolerance 1e-6":
-                (all_peridynamic_cg_to[1e-6], [0, 1, 2, 3, 4, 5]),
+                (all_peridynamic_cg_to[1e-6], plate_halving_levels),
             # The sparse LU of 1.2M particle dofs does not fit: two levels.
             "all peridynamic, direct": (all_peridynamic + direct, [0, 1]),
             # The saddle-point LU: 3.7 s and 30 s at the first two levels
@@ -239,13 +250,19 @@ scenes = {
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack, FEM cells at least 0.0125, tolerance 1e-6":
                 (scalable_cg_loose + plate_sized_fem_to_1_80(),
-                 [0, 1, 2, 3, 4, 5]),
-            # The same with the collar layer weighted (doc §19).
+                 plate_halving_levels),
+            # The same with the collar layer weighted (doc §19), also at
+            # 1/1920.
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack, FEM cells at least 0.0125, tolerance 1e-6, collar layer "
             "weighted":
                 (scalable_cg_loose + plate_sized_fem_to_1_80() +
-                 collar_layer_weighted, [0, 1, 2, 3, 4, 5]),
+                 collar_layer_weighted, [0, 1, 2, 3, 4, 5, 6]),
+            "coupled, reduced space cg, cg matrix-free, region sized to the "
+            "crack, FEM cells at least 0.0125, tolerance 1e-6, collar layer "
+            "weighted, crack opening field":
+                (scalable_cg_loose + plate_sized_fem_to_1_80() +
+                 with_crack_opening_field, [0, 1, 2, 3, 4, 5, 6]),
             # 4.8 s and 23 s (one rank, a 2-core Xeon, 2026-12-06).
             "coupled, full space gmres, matrix-free":
                 (full_space_gmres, [0, 1]),
@@ -257,7 +274,7 @@ scenes = {
         "prm": plate_prm,
         "reference": "all peridynamic, cg matrix-free, tolerance 1e-8",
         "equal-error line": "all peridynamic, cg matrix-free, tolerance 1e-6",
-        "levels": [["Discretization/Mesh size=%g" % h] + centred_plate(4)
+        "levels": [["Discretization/Mesh size=%.12g" % h] + centred_plate(4)
                    for h in plate_mesh_sizes],
         "runs": {
             # At 1/640: 19.8M unknowns, as the plate of side 2 at 1/1280.
@@ -274,6 +291,11 @@ scenes = {
             "weighted":
                 (scalable_cg_loose + plate_sized_fem_to_1_80(4) +
                  collar_layer_weighted, [0, 1, 2, 3, 4]),
+            "coupled, reduced space cg, cg matrix-free, region sized to the "
+            "crack, FEM cells at least 0.0125, tolerance 1e-6, collar layer "
+            "weighted, crack opening field":
+                (scalable_cg_loose + plate_sized_fem_to_1_80(4) +
+                 with_crack_opening_field, [0, 1, 2, 3, 4]),
         },
     },
     "bar_3d": {
@@ -324,7 +346,7 @@ def run(scene, name, level, sets):
     command = [options.ltn, scenes[scene]["prm"], "--output-dir", out,
                "--set", "Output/Write VTU=false"]
     # A run's setting is a string, or a function of the level giving a list.
-    for s in unweighted + scenes[scene]["levels"][level] + sets:
+    for s in baseline + scenes[scene]["levels"][level] + sets:
         for setting in s(level) if callable(s) else [s]:
             command += ["--set", setting]
     subprocess.run(command, check=True, capture_output=True)
@@ -399,7 +421,30 @@ for scene in options.scenes:
             t_all = t2 * (error(summary) / e2) ** (1 / slope)
             print(scene, name, level, "error %.3g in %.3g s;" % (
                 error(summary), t), "all peridynamic at that error "
-                "%.3g s (error ~ t^%.2f): %.2fx" % (t_all, slope, t_all / t))
+                "%.3g s (error ~ t^%.2f, %s): %.2fx" % (
+                    t_all, slope, "interpolated" if e2 <= error(summary) <=
+                    e1 else "extrapolated", t_all / t))
+    # The converse, with both sides measured: at each error the equal-error
+    # line reached, the coupled time along the log-log line through the two
+    # runs of a coupled curve that bracket it (none beyond a curve's runs).
+    for name, (sets, levels) in scenes[scene]["runs"].items():
+        if not name.startswith("coupled"):
+            continue
+        curve = [(error(results[(name, level)]),
+                  results[(name, level)]["timings"]["total"], level)
+                 for level in levels if (name, level) in results]
+        for line_level in line_levels:
+            e_all = error(results[(line_run, line_level)])
+            t_all = results[(line_run, line_level)]["timings"]["total"]
+            for (e_a, t_a, a), (e_b, t_b, b) in zip(curve, curve[1:]):
+                if e_a >= e_all >= e_b and e_a > e_b:
+                    t = t_a * (e_all / e_a) ** (math.log(t_b / t_a) /
+                                                math.log(e_b / e_a))
+                    print(scene, name, "at the error %.3g of the equal-error "
+                          "line's level %d (%.3g s): %.3g s between its "
+                          "levels %d and %d: %.2fx" % (
+                              e_all, line_level, t_all, t, a, b, t_all / t))
+                    break
     for (name, level), summary in results.items():
         opening = summary["mechanics"]["crack_openings"][0]["max_opening"]
         solver = summary["solver"]
@@ -457,4 +502,4 @@ for axis, scene in zip(axes[0], shown):
     axis.grid(True, which="both", alpha=0.3)
     axis.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12))
 figure.tight_layout()
-figure.savefig(options.png, dpi=120)
+figure.savefig(options.png, dpi=120, bbox_inches="tight")
