@@ -42,17 +42,14 @@ namespace ltn
           parameters.model_solvers.conjugate_gradients ? "preconditioned cg" :
                                                          "preconditioned gmres";
       }
-    record.iterations          = solution.iterations;
-    record.residual            = solution.residual;
-    record.true_residual       = solution.true_residual;
-    record.explicit_controls   = solution.explicit_controls;
-    record.coarse_modes        = solution.coarse_modes;
-    record.collar_layer_weight = parameters.controls.collar_layer_weight;
-    record.crack_opening_fields =
-      parameters.method == "reduced space cg" ?
-        parameters.controls.nonlocal_coarse_fields.size() :
-        0;
-    record.nonlocal_block_unknowns      = solution.nonlocal_block_unknowns;
+    record.iterations              = solution.iterations;
+    record.residual                = solution.residual;
+    record.true_residual           = solution.true_residual;
+    record.explicit_controls       = solution.explicit_controls;
+    record.coarse_modes            = solution.coarse_modes;
+    record.collar_layer_weight     = parameters.controls.collar_layer_weight;
+    record.crack_opening_fields    = solution.crack_opening_fields;
+    record.nonlocal_block_unknowns = solution.nonlocal_block_unknowns;
     record.preconditioner_setup_seconds = solution.preconditioner_setup_seconds;
     record.standalone_seconds           = solution.standalone_seconds;
     record.smallest_ritz_value          = solution.smallest_ritz_value;

@@ -195,6 +195,7 @@ namespace ltn
         // of the model's unknowns each.
         std::vector<std::vector<MonomialTerm>> columns =
           polynomial_fields(dim, degree, n_components);
+        const std::size_t n_monomial_fields = columns.size();
         // The given fields, displacements, after the monomials: expanded in
         // the monomials' coordinates, to the degree of their products.
         unsigned int highest_degree = degree;
@@ -217,7 +218,12 @@ namespace ltn
         std::vector<std::vector<double>> coefficients;
         for (const auto &field : columns)
           {
-            PolynomialControlField z{k, hessian.new_control_vector(), {}};
+            PolynomialControlField z{k,
+                                     &field - columns.data() >=
+                                       static_cast<std::ptrdiff_t>(
+                                         n_monomial_fields),
+                                     hessian.new_control_vector(),
+                                     {}};
             std::vector<double>    column(n_components * n_monomials, 0.);
             // This rank's controls in the order of its control positions.
             TrilinosWrappers::MPI::Vector &controls = z.controls.block(k);

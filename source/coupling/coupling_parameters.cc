@@ -120,9 +120,10 @@ namespace ltn
         "iterations fall from 20 to 16 at spacing 1/1280, and the solve "
         "takes 17 % less time. `auto`: in 2D only (the 3D bars of "
         "benchmarks/scaling have no such slow mode: one outer iteration "
-        "fewer, for two solves more, 10 % more time on the 10^6 bar). The "
-        "number of fields goes to `solver.control preconditioner` in "
-        "summary.json.");
+        "fewer, for two solves more, 10 % more time on the 10^6 bar). A "
+        "field the polynomial columns span already (Coarse space degree 3 "
+        "and more) is dropped. The number kept goes to `solver.control "
+        "preconditioner` in summary.json.");
       prm.declare_entry(
         "Time standalone solves",
         "false",

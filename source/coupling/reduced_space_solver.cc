@@ -185,9 +185,12 @@ namespace ltn
                                                *controls.coarse_degree,
                                                {nonlocal_model},
                                                controls.nonlocal_coarse_fields))
-                  Z.push_back({z.model,
-                               z.controls.block(z.model),
-                               std::move(z.extension)});
+                  {
+                    solution.crack_opening_fields += z.given ? 1 : 0;
+                    Z.push_back({z.model,
+                                 z.controls.block(z.model),
+                                 std::move(z.extension)});
+                  }
                 for (auto &z : unit_control_fields(hessian, local_model))
                   Z.push_back({local_model, std::move(z)});
               }

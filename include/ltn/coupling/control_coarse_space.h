@@ -69,6 +69,8 @@ namespace ltn
   {
     /** The model whose controls the field lives on. */
     unsigned int model;
+    /** One of the given fields, not a monomial one. */
+    bool given = false;
     /** The field at the controls, zero at the other model's. */
     TrilinosWrappers::MPI::BlockVector controls;
     /**

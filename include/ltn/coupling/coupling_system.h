@@ -175,6 +175,11 @@ namespace ltn
      */
     unsigned int coarse_modes = 0;
     /**
+     * Of those, the given fields (`ControlPreconditionerSettings::
+     * nonlocal_coarse_fields`) the polynomial columns did not already span.
+     */
+    unsigned int crack_opening_fields = 0;
+    /**
      * The size of the saddle-point system that inverts the model of the
      * nonlocal controls' Hessian block (SurrogateHessianBlock); 0 without.
      */

@@ -38,7 +38,7 @@ namespace ltn
     double       preconditioner_setup_seconds = 0;
     /** The Collar layer weight the Control preconditioner used. */
     double collar_layer_weight = 0;
-    /** The crack opening fields among the coarse modes. */
+    /** CouplingSolution::crack_opening_fields. */
     unsigned int crack_opening_fields = 0;
     /** CouplingSolution::nonlocal_block_unknowns. */
     types::global_dof_index nonlocal_block_unknowns = 0;
