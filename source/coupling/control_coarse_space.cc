@@ -216,12 +216,12 @@ namespace ltn
         const std::size_t n_monomials    = exponents.size();
         const std::size_t first_of_model = Z.size();
         std::vector<std::vector<double>> coefficients;
-        for (const auto &field : columns)
+        for (std::size_t f = 0; f < columns.size(); ++f)
           {
+            const std::vector<MonomialTerm> &field = columns[f];
+            // The given fields come after the monomial ones.
             PolynomialControlField z{k,
-                                     &field - columns.data() >=
-                                       static_cast<std::ptrdiff_t>(
-                                         n_monomial_fields),
+                                     f >= n_monomial_fields,
                                      hessian.new_control_vector(),
                                      {}};
             std::vector<double>    column(n_components * n_monomials, 0.);
