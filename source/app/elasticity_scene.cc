@@ -2,6 +2,7 @@
 
 #include <ltn/app/elasticity_scene.h>
 #include <ltn/app/level_solve.h>
+#include <ltn/base/discrete_model.h>
 #include <ltn/base/input_error.h>
 #include <ltn/coupling/overlap_quadrature.h>
 #include <ltn/local/elasticity_problem.h>
@@ -31,10 +32,7 @@ namespace ltn
     crack_opening_fields(const std::vector<Crack<dim>> &cracks)
     {
       const auto to_array = [](const Tensor<1, dim> &v) {
-        std::array<double, 3> a = {{0, 0, 0}};
-        for (unsigned int d = 0; d < dim; ++d)
-          a[d] = v[d];
-        return a;
+        return DiscreteModel::padded<dim>(Point<dim>(v));
       };
       std::vector<AffineProductField> fields;
       for (const Crack<dim> &crack : cracks)

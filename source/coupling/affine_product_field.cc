@@ -4,24 +4,6 @@
 
 namespace ltn
 {
-  double
-  AffineProductField::value(const std::array<double, 3> &x,
-                            const unsigned int           c,
-                            const unsigned int           dim) const
-  {
-    double product = direction[c];
-    for (const auto &[g, h] : factors)
-      {
-        double affine = h;
-        for (unsigned int d = 0; d < dim; ++d)
-          affine += g[d] * x[d];
-        product *= affine;
-      }
-    return product;
-  }
-
-
-
   std::vector<MonomialTerm>
   expand_in_frame(const AffineProductField    &field,
                   const std::array<double, 3> &centre,

@@ -306,7 +306,6 @@ namespace ltn
         node_positions.push_back(padded<dim>(position_of(n)));
     }
 
-  private:
     /** @p x with its unused coordinates 0. */
     template <int dim>
     static std::array<double, 3>

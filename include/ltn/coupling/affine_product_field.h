@@ -17,12 +17,6 @@ namespace ltn
   {
     std::array<double, 3>                                 direction;
     std::vector<std::pair<std::array<double, 3>, double>> factors;
-
-    /** Component @p c of the field at @p x in @p dim dimensions. */
-    double
-    value(const std::array<double, 3> &x,
-          const unsigned int           c,
-          const unsigned int           dim) const;
   };
 
   /** A multiple of a monomial in one component of a vector field. */
