@@ -58,13 +58,13 @@ scalable = ["Coupling/Model solvers=preconditioned gmres",
 scalable_cg = scalable + ["Coupling/Model solvers=preconditioned cg",
                           "Coupling/Local model solver=direct"]
 # The same to tolerances sized to the openings' errors (above 1e-4
-# relative): they move by at most 7.3e-7 relative on the plate (README,
+# relative): they move by at most 7.3e-7 relative on the plate (HISTORY.md,
 # eighth session) and 3.1e-6 on the bar at 1/64 (ninth session).
 scalable_cg_loose = scalable_cg + ["Coupling/Relative tolerance=1e-6",
                                    "Coupling/Model solver tolerance=1e-8"]
 # The all-peridynamic solve is one CG, whose tolerance is the model solver's
 # alone (`Relative tolerance` is the coupled CG's): to 1e-8, and to 1e-6,
-# sized to the openings' errors as the coupled CG's 1e-6 is (README, ninth
+# sized to the openings' errors as the coupled CG's 1e-6 is (HISTORY.md, ninth
 # session).
 all_peridynamic_cg_to = {
     tolerance: all_peridynamic + scalable_cg +
@@ -80,7 +80,7 @@ full_space_gmres = (["Coupling/Method=full space gmres"] + scalable +
 # the crack with one cell of the coarsest FEM mesh (1/20) beyond its tips and
 # on either side, the overlap one such cell wide; the file's region leaves
 # five cells on every side. The same openings to 1e-7 at 1/160 and 1/320
-# (README, "The plate's nonlocal region sized to its crack").
+# (HISTORY.md, "The plate's nonlocal region sized to its crack").
 sized_overlap = 0.05
 
 
@@ -144,7 +144,7 @@ def plate_fem_mesh_no_finer_than(coarsest):
     """A level's settings that keep the plate's particles (spacing and
     horizon the file's ratios to the level's mesh size) on an FEM mesh no
     finer than `coarsest`: the FEM model's error then stays far below the
-    particles' (README, eighth session)."""
+    particles' (HISTORY.md, eighth session)."""
     spacing, horizon = [prm_value(plate_prm, name) for name in
                         ("Particle spacing to mesh size ratio",
                          "Horizon to mesh size ratio")]
@@ -322,7 +322,7 @@ scenes = {
                 (["Coupling/Method=reduced space cg"] + scalable_cg,
                  [0, 1, 2, 3]),
             # FEM cells small enough that the FEM model's error does not
-            # cancel the particles' (README, ninth session); FE_Q(2) needs
+            # cancel the particles' (HISTORY.md, ninth session); FE_Q(2) needs
             # spacings of at most half its cells: from 1/32 on.
             "coupled, reduced space cg, cg matrix-free, FE_Q(2) on cells "
             "of 0.0625, tolerance 1e-6":
