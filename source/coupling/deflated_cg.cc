@@ -151,37 +151,67 @@ namespace ltn
     for (const auto &model : states)
       for (unsigned int a = 0; a < model.columns.size(); ++a)
         column_in_model[model.columns[a]] = a;
+    // Only model k's own gradient is needed where no later model has
+    // columns: the assembled B_k^T W B_k, if given, serves.
+    const auto alone = [&](const unsigned int k) {
+      return equations.observe_alone[k] &&
+             (k == 1 || states[1].columns.empty());
+    };
+    // The blocks are the same on every rank, sized by the largest share of
+    // each model's unknowns: observe_alone is collective.
+    std::array<std::size_t, 2> largest;
+    for (const unsigned int l : {0u, 1u})
+      largest[l] = Utilities::MPI::max(states[l].local_size, communicator);
     for (unsigned int first = 0; first < m;)
       {
-        std::array<std::vector<double>, 2> gradients;
-        std::vector<unsigned int>          block;
-        std::size_t                        bytes = 0;
-        for (; first < m && (block.empty() || bytes < block_bytes); ++first)
+        // The block: the columns from `first` on whose gradients fit in
+        // block_bytes (at least one).
+        std::vector<unsigned int> block;
+        for (std::size_t bytes = 0;
+             first < m && (block.empty() || bytes < block_bytes);
+             ++first)
           {
-            NormalEquations::States column;
-            const unsigned int      k = Z[first].model;
-            column[k]                 = equations.new_state(k);
-            std::copy_n(states[k].state(column_in_model[first]),
-                        states[k].local_size,
-                        column[k].begin());
-            const auto add_gradient = [&](const unsigned int l,
-                                          const VectorType  &g) {
-              gradients[l].insert(gradients[l].end(), g.begin(), g.end());
-              bytes += sizeof(double) * states[l].local_size;
-            };
-            // Only model k's own gradient is needed where no later model
-            // has columns: the assembled B_k^T W B_k, if given, serves.
-            if (equations.observe_alone[k] &&
-                (k == 1 || states[1].columns.empty()))
-              add_gradient(k, equations.observe_alone[k](column[k]));
-            else
-              {
-                const Observation observed = equations.observe(column);
-                for (unsigned int l = k; l < 2; ++l)
-                  if (!states[l].columns.empty())
-                    add_gradient(l, equations.observe_transpose(l, observed));
-              }
+            const unsigned int k = Z[first].model;
+            for (unsigned int l = k; l < 2; ++l)
+              if (!states[l].columns.empty() && (l == k || !alone(k)))
+                bytes += sizeof(double) * largest[l];
             block.push_back(first);
+          }
+        // The gradients of the block's columns, model by model in the
+        // block's order. Consecutive columns of a model that observes
+        // alone, whose states lie one after the other in a panel, go to
+        // observe_alone together.
+        std::array<std::vector<double>, 2> gradients;
+        for (std::size_t b = 0; b < block.size();)
+          {
+            const unsigned int k    = Z[block[b]].model;
+            const unsigned int a    = column_in_model[block[b]];
+            const std::size_t  size = states[k].local_size;
+            if (alone(k))
+              {
+                std::size_t n = 1;
+                while (b + n < block.size() && Z[block[b + n]].model == k &&
+                       (a + n) % states[k].panel_width != 0)
+                  ++n;
+                std::vector<double> &g = gradients[k];
+                g.resize(g.size() + n * size);
+                equations.observe_alone[k](n,
+                                           states[k].state(a),
+                                           g.data() + g.size() - n * size);
+                b += n;
+                continue;
+              }
+            NormalEquations::States column;
+            column[k] = equations.new_state(k);
+            std::copy_n(states[k].state(a), size, column[k].begin());
+            const Observation observed = equations.observe(column);
+            for (unsigned int l = k; l < 2; ++l)
+              if (!states[l].columns.empty())
+                {
+                  const VectorType g = equations.observe_transpose(l, observed);
+                  gradients[l].insert(gradients[l].end(), g.begin(), g.end());
+                }
+            ++b;
           }
         // The block's columns whose observation gave model l's gradient.
         for (const unsigned int l : {0u, 1u})

@@ -392,7 +392,7 @@ namespace ltn
     Epetra_MultiVector     columns(map, b.size());
     for (std::size_t j = 0; j < b.size(); ++j)
       std::copy(b[j].begin(), b[j].end(), columns[j]);
-    mumps->solve(columns, transpose);
+    solve(columns, transpose);
     for (std::size_t j = 0; j < b.size(); ++j)
       {
         x[j].reinit(b[j], true);
@@ -400,5 +400,13 @@ namespace ltn
                   columns[j] + b[j].locally_owned_size(),
                   x[j].begin());
       }
+  }
+
+
+
+  void
+  DirectSolver::solve(Epetra_MultiVector &columns, const bool transpose) const
+  {
+    mumps->solve(columns, transpose);
   }
 } // namespace ltn

@@ -11,6 +11,8 @@
 #include <ltn/coupling/reduced_hessian.h>
 #include <ltn/coupling/reduced_space_solver.h>
 
+#include <Epetra_MultiVector.h>
+
 #include <algorithm>
 #include <limits>
 #include <memory>
@@ -149,15 +151,28 @@ namespace ltn
         // B_l^T W B_l assembled: each local coarse column's entries of E
         // are then a sparse product over the local unknowns, not a pass
         // over every overlap point and back (78 columns took about 4 s of
-        // the 10^6 bar of benchmarks/scaling that way).
+        // the 10^6 bar of benchmarks/scaling that way), and many columns
+        // share one product, a pass over the matrix's rows for all of them.
         std::optional<TrilinosWrappers::SparseMatrix> local_gram;
         if (two_level)
           {
             local_gram.emplace(system.observation_gram(local_model));
-            equations.observe_alone[local_model] = [&](const VectorType &u) {
-              VectorType gradient = system.models[local_model]->new_vector();
-              local_gram->vmult(gradient, u);
-              return gradient;
+            equations.observe_alone[local_model] = [&](const unsigned int n,
+                                                       const double      *u,
+                                                       double            *g) {
+              const Epetra_CrsMatrix &gram = local_gram->trilinos_matrix();
+              const int               size = gram.RowMap().NumMyElements();
+              // Epetra's views need an address even for no entries.
+              double             none = 0;
+              Epetra_MultiVector states(View,
+                                        gram.DomainMap(),
+                                        size ? const_cast<double *>(u) : &none,
+                                        std::max(size, 1),
+                                        n);
+              Epetra_MultiVector gradients(
+                View, gram.RangeMap(), size ? g : &none, std::max(size, 1), n);
+              AssertThrow(gram.Multiply(false, states, gradients) == 0,
+                          ExcMessage("the local coarse columns' gradients"));
             };
           }
         try

@@ -583,3 +583,165 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
       counted.equations, none, no_preconditioner, d, x, too_few, [](double) {}),
     SolverControl::NoConvergence);
 }
+
+
+
+TEST_CASE("the deflated CG is the same with block 1's gradients from "
+          "observe_alone, many columns at a time, in blocks of any size",
+          "[solvers][unit]")
+{
+  CountedEquations         counted(0.1);
+  const FullMatrix<double> A = counted.matrix();
+  const Observation        d = CountedEquations::data(
+    [](unsigned int q) { return std::sin(0.3 * q) + 0.1 * q / n; });
+  const BlockVectorType b      = counted.rhs(d);
+  const auto            jacobi = jacobi_of(A);
+
+  // F_1^T W F_1 u for block 1's states alone (alpha is not in it).
+  NormalEquations    alone = counted.equations;
+  FullMatrix<double> gram(block_sizes[1], block_sizes[1]);
+  for (unsigned int i = 0; i < block_sizes[1]; ++i)
+    for (unsigned int j = 0; j < block_sizes[1]; ++j)
+      gram(i, j) =
+        A(block_sizes[0] + i, block_sizes[0] + j) - (i == j ? 0.1 : 0.);
+  std::vector<unsigned int> calls;
+  alone.observe_alone[1] =
+    [&](const unsigned int n_columns, const double *u, double *g) {
+      calls.push_back(n_columns);
+      for (unsigned int c = 0; c < n_columns; ++c)
+        for (unsigned int i = 0; i < block_sizes[1]; ++i)
+          {
+            double sum = 0;
+            for (unsigned int j = 0; j < block_sizes[1]; ++j)
+              sum += gram(i, j) * u[c * block_sizes[1] + j];
+            g[c * block_sizes[1] + i] = sum;
+          }
+    };
+
+  const auto solve = [&](const NormalEquations &equations,
+                         const std::size_t      block_bytes) {
+    const DeflationSpace coarse(deflation_columns(), equations, block_bytes);
+    BlockVectorType      x = new_vector();
+    SolverControl        control(100, 1e-12 * b.l2_norm());
+    solve_deflated_cg(equations, coarse, jacobi, d, x, control, [](double) {});
+    return x;
+  };
+  const BlockVectorType x = solve(counted.equations, std::size_t(64) << 20);
+  // One block; in blocks of 2 KB (panels of 2 states of block 0), whose
+  // runs of block 1's columns stop at the panels' ends.
+  for (const std::size_t block_bytes :
+       {std::size_t(64) << 20, std::size_t(2048)})
+    {
+      calls.clear();
+      BlockVectorType y = solve(alone, block_bytes);
+      y -= x;
+      CHECK(y.l2_norm() < 1e-12 * x.l2_norm());
+      unsigned int columns = 0;
+      for (const unsigned int c : calls)
+        columns += c;
+      CHECK(columns == block_sizes[1]);
+      CHECK(calls.size() < block_sizes[1]);
+    }
+}
+
+
+
+TEST_CASE("the coarse matrix's blocks of columns, and so its collective "
+          "gradient products, are the same on every rank",
+          "[solvers][unit]")
+{
+  using VectorType           = TrilinosWrappers::MPI::Vector;
+  const MPI_Comm     comm    = MPI_COMM_WORLD;
+  const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+  const std::array<unsigned int, 2> sizes = {{16, 24}};
+  // Rank 0 owns three quarters of each model's unknowns, the other ranks
+  // share the rest: their blocks by their own shares would differ.
+  const auto owned = [&](const unsigned int k) {
+    const unsigned int first_of_others = n_ranks > 1 ? 3 * sizes[k] / 4 : 0;
+    const unsigned int others          = std::max(1u, n_ranks - 1);
+    const auto         start           = [&](const unsigned int r) {
+      return r == 0 ? 0u :
+                                        first_of_others +
+                        (sizes[k] - first_of_others) * (r - 1) / others;
+    };
+    IndexSet set(sizes[k]);
+    set.add_range(start(rank), rank + 1 < n_ranks ? start(rank + 1) : sizes[k]);
+    return set;
+  };
+  const auto new_state = [&](const unsigned int k) {
+    return VectorType(owned(k), comm);
+  };
+  const auto weight = [](const unsigned int i) { return 1. + 0.1 * i; };
+  // V = I and W diagonal: this rank's observations are its entries of
+  // both models' states, one after the other.
+  const std::size_t size_0 = owned(0).n_elements();
+  const std::size_t size_1 = owned(1).n_elements();
+
+  NormalEquations equations{
+    [](const unsigned int, const VectorType &x, const VectorType *) {
+      return x;
+    },
+    [&](const NormalEquations::States &u) {
+      NormalEquations::Observation y(size_0 + size_1, 0.);
+      for (const unsigned int k : {0u, 1u})
+        if (u[k].size() > 0)
+          std::copy(u[k].begin(),
+                    u[k].end(),
+                    y.begin() + (k == 0 ? 0 : size_0));
+      return y;
+    },
+    [&](const unsigned int k, const NormalEquations::Observation &y) {
+      VectorType g = new_state(k);
+      for (std::size_t i = 0; i < g.locally_owned_size(); ++i)
+        g.begin()[i] = weight(i) * y[(k == 0 ? 0 : size_0) + i];
+      return g;
+    },
+    {},
+    new_state,
+    [&](const unsigned int k) {
+      VectorType observed = new_state(k);
+      observed            = 1.;
+      return observed;
+    },
+    0.};
+  std::vector<int> calls;
+  equations.observe_alone[1] =
+    [&](const unsigned int n_columns, const double *u, double *g) {
+      calls.push_back(n_columns);
+      for (unsigned int c = 0; c < n_columns; ++c)
+        for (std::size_t i = 0; i < size_1; ++i)
+          g[c * size_1 + i] = weight(i) * u[c * size_1 + i];
+    };
+
+  // Two columns of model 0 (a constant and a ramp), every unit vector of
+  // model 1.
+  std::vector<DeflationSpace::Column> columns;
+  for (const unsigned int j : {0u, 1u})
+    {
+      VectorType z = new_state(0);
+      for (const auto i : owned(0))
+        z(i) = j == 0 ? 1. : double(i);
+      z.compress(VectorOperation::insert);
+      columns.push_back({0, z});
+    }
+  for (unsigned int i = 0; i < sizes[1]; ++i)
+    {
+      VectorType z = new_state(1);
+      if (z.in_local_range(i))
+        z(i) = 1.;
+      z.compress(VectorOperation::insert);
+      columns.push_back({1, z});
+    }
+  // Blocks of 320 bytes: panels of two of the largest share's states.
+  const DeflationSpace coarse(std::move(columns), equations, 320);
+
+  unsigned int total = 0;
+  for (const int c : calls)
+    total += c;
+  CHECK(total == sizes[1]);
+  const std::vector<std::vector<int>> all_calls =
+    Utilities::MPI::all_gather(comm, calls);
+  for (const auto &other : all_calls)
+    CHECK(other == calls);
+}

@@ -61,14 +61,18 @@ namespace ltn
                                           const std::vector<VectorType> &)>
       forward_columns = {};
     /**
-     * Optional, per model: `B_k^T W B_k u` for a state `u` of model k alone
-     * (the other's zero) from an assembled matrix, the gradient that
+     * Optional, per model: `B_k^T W B_k u` for states `u` of model k alone
+     * (the other's zero) from an assembled matrix, the gradients that
      * observe_transpose(k, observe(u)) gives by a pass over the overlap
      * points and back. A coarse column whose entries of `E` need no other
-     * model's gradient then skips that pass.
+     * model's gradient then skips that pass. Called with @p n states, this
+     * rank's entries of each (the model's locally owned size) one after
+     * the other from @p u; writes the gradients the same way from @p g:
+     * one sparse product for many columns.
      */
-    std::array<std::function<VectorType(const VectorType &)>, 2> observe_alone =
-      {};
+    std::array<std::function<void(unsigned int n, const double *u, double *g)>,
+               2>
+      observe_alone = {};
 
     /** `F^T W d`: the adjoint solves of the observed residual @p d. */
     BlockVectorType

@@ -3,6 +3,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <Epetra_MultiVector.h>
+
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -99,6 +101,13 @@ namespace ltn
     solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
           const std::vector<TrilinosWrappers::MPI::Vector> &b,
           const bool                                        transpose) const;
+
+    /**
+     * The same on the columns of @p columns, in place: each right-hand side
+     * is replaced by its solution.
+     */
+    void
+    solve(Epetra_MultiVector &columns, const bool transpose) const;
 
     /** The entries of the factors, over all ranks (MUMPS's INFOG(29)). */
     double
