@@ -362,6 +362,9 @@ def extrapolate(values):
     return c - (b - c) / (ratio - 1), math.log2(ratio)
 
 
+# Every curve of each scene, in order, for the chart: --only runs some of
+# them, the CSV keeps the others.
+curves = {name: list(scene["runs"]) for name, scene in scenes.items()}
 if options.only:
     for name in options.scenes:
         scene = scenes[name]
@@ -484,14 +487,16 @@ import matplotlib.pyplot as plt
 
 shown = [s for s in scenes if any(r["scene"] == s for r in rows)]
 # One colour per solver in every panel.
-names = list(dict.fromkeys(n for s in shown for n in scenes[s]["runs"]))
+names = list(dict.fromkeys(n for s in shown for n in curves[s]))
 colour = {n: plt.get_cmap("tab20")(i % 20) for i, n in enumerate(names)}
 # The legends go below the panels: inside, they hid the plate's curves.
 figure, axes = plt.subplots(1, len(shown), figsize=(7 * len(shown), 7.5),
                             squeeze=False)
 for axis, scene in zip(axes[0], shown):
-    for name in scenes[scene]["runs"]:
+    for name in curves[scene]:
         mine = [r for r in rows if r["scene"] == scene and r["run"] == name]
+        if not mine:
+            continue
         axis.loglog([float(r["total_s"]) for r in mine],
                     [float(r["error"]) for r in mine],
                     "o--" if name.startswith("all") else "s-", label=name,
