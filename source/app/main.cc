@@ -121,6 +121,8 @@ namespace
         json << '\n';
         std::cout << '\n';
         ltn::print_convergence_table(summary, std::cout);
+        std::cout << '\n';
+        ltn::print_time_per_phase(summary, std::cout);
         std::cout << "\nTotal wall time " << summary.total_time
                   << " s, peak memory " << summary.memory_mb << " MB\n"
                   << "Output written to " << output_directory << "/"

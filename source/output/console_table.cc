@@ -43,4 +43,69 @@ namespace ltn
         out << std::defaultfloat << '\n';
       }
   }
+
+
+
+  void
+  print_time_per_phase(const RunSummary &summary, std::ostream &out)
+  {
+    const auto &levels = summary.levels;
+    if (levels.empty())
+      return;
+    // The caller's format comes back whichever way this returns.
+    const struct Restore
+    {
+      std::ostream            &out;
+      const std::ios::fmtflags flags     = out.flags();
+      const std::streamsize    precision = out.precision();
+      ~Restore()
+      {
+        out.flags(flags);
+        out.precision(precision);
+      }
+    } restore{out};
+    const auto seconds = [](const double t) {
+      std::ostringstream s;
+      s << std::fixed << std::setprecision(t < 10 ? 2 : 1) << t;
+      return s.str();
+    };
+    out << "Wall time per phase, seconds (all levels; share of "
+        << seconds(summary.total_time) << " s)\n";
+    for (std::size_t p = 0; p < levels.front().timings.size(); ++p)
+      {
+        double sum = 0;
+        for (const LevelRecord &level : levels)
+          sum += level.timings[p].second;
+        out << "  " << std::left << std::setw(22)
+            << levels.front().timings[p].first << std::right << std::setw(9)
+            << seconds(sum) << std::setw(7) << std::fixed
+            << std::setprecision(1)
+            << (summary.total_time > 0 ? 100 * sum / summary.total_time : 0.)
+            << " %\n";
+      }
+    const LevelRecord &last = levels.back();
+    if (last.solve_phases.empty())
+      return;
+    // Each model's solves in a phase, with its iterations where it
+    // iterates (a factorized model solves without).
+    const auto solves = [](const LevelRecord::SolvePhase &phase,
+                           const unsigned int             k) {
+      std::ostringstream s;
+      s << phase.solves[k];
+      if (phase.iterations[k] > 0)
+        s << " (" << phase.iterations[k] << ")";
+      return s.str();
+    };
+    out << "\nThe coupled solve"
+        << (levels.size() > 1 ? " of the last level" : "") << ", "
+        << last.iterations << " outer iterations:\n"
+        << "  " << std::left << std::setw(22) << "phase" << std::right
+        << std::setw(9) << "seconds" << std::setw(26)
+        << "nonlocal solves (iter.)" << std::setw(24) << "local solves (iter.)"
+        << '\n';
+    for (const LevelRecord::SolvePhase &phase : last.solve_phases)
+      out << "  " << std::left << std::setw(22) << phase.name << std::right
+          << std::setw(9) << seconds(phase.seconds) << std::setw(26)
+          << solves(phase, 0) << std::setw(24) << solves(phase, 1) << '\n';
+  }
 } // namespace ltn

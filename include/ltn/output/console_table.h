@@ -12,4 +12,13 @@ namespace ltn
    */
   void
   print_convergence_table(const RunSummary &summary, std::ostream &out);
+
+  /**
+   * Print where the run's wall time went: each phase over all levels (the
+   * `timings` of summary.json) with its share of the total, and for the
+   * last level the coupled solve's own phases (reduced-space CG) with each
+   * model's solves and iterations in them.
+   */
+  void
+  print_time_per_phase(const RunSummary &summary, std::ostream &out);
 } // namespace ltn

@@ -1,0 +1,95 @@
+// The run's closing tables on the console (source/output/console_table.cc):
+// the wall time per phase over all levels with its share of the total, and
+// the last level's coupled solve per phase with each model's solves.
+
+#include <ltn/output/console_table.h>
+
+#include <catch2/catch.hpp>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace ltn;
+
+namespace
+{
+  /** The words of the line of @p text that starts with @p start. */
+  std::vector<std::string>
+  words_of_line(const std::string &text, const std::string &start)
+  {
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);)
+      if (line.rfind(start, 0) == 0)
+        {
+          std::istringstream       in(line);
+          std::vector<std::string> words;
+          for (std::string word; in >> word;)
+            words.push_back(word);
+          return words;
+        }
+    return {};
+  }
+
+  using Words = std::vector<std::string>;
+
+  LevelRecord
+  level(const double solve_seconds, const unsigned int outer_iterations)
+  {
+    LevelRecord record;
+    record.iterations = outer_iterations;
+    record.timings    = {{"assemble nonlocal", 0.5}, {"solve", solve_seconds}};
+    LevelRecord::SolvePhase coarse{"coarse space", 12.35};
+    coarse.solves     = {{12, 78}};
+    coarse.iterations = {{125, 0}};
+    LevelRecord::SolvePhase iterations{"iterations", 29.1};
+    iterations.solves     = {{25, 13}};
+    iterations.iterations = {{340, 26}};
+    record.solve_phases   = {coarse, iterations};
+    return record;
+  }
+} // namespace
+
+
+
+TEST_CASE("the console's time per phase sums the levels and lists the last "
+          "level's solve phases with each model's solves and iterations",
+          "[output][unit]")
+{
+  RunSummary summary;
+  summary.levels     = {level(3., 10), level(47.5, 12)};
+  summary.total_time = 52.;
+
+  std::ostringstream out;
+  out.precision(3);
+  print_time_per_phase(summary, out);
+  const std::string text = out.str();
+  INFO(text);
+
+  // 0.5 + 0.5 s of assembly, 3 + 47.5 s of solve, of 52 s.
+  CHECK(text.find("share of 52.0 s") != std::string::npos);
+  CHECK(words_of_line(text, "  assemble nonlocal") ==
+        Words{"assemble", "nonlocal", "1.00", "1.9", "%"});
+  CHECK(words_of_line(text, "  solve") == Words{"solve", "50.5", "97.1", "%"});
+  CHECK(text.find("of the last level, 12 outer iterations") !=
+        std::string::npos);
+  // A model without iterations (factorized) shows its solves alone.
+  CHECK(words_of_line(text, "  coarse space") ==
+        Words{"coarse", "space", "12.3", "12", "(125)", "78"});
+  CHECK(words_of_line(text, "  iterations") ==
+        Words{"iterations", "29.1", "25", "(340)", "13", "(26)"});
+  // The caller's stream format is left as it was.
+  CHECK(out.precision() == 3);
+  CHECK((out.flags() & std::ios::floatfield) == std::ios::fmtflags{});
+
+  // One level without solve phases (a direct method): the first table only.
+  RunSummary direct;
+  direct.levels = {level(1., 1)};
+  direct.levels.front().solve_phases.clear();
+  direct.total_time = 2.;
+  std::ostringstream direct_out;
+  print_time_per_phase(direct, direct_out);
+  CHECK(direct_out.str().find("coupled solve") == std::string::npos);
+  CHECK(words_of_line(direct_out.str(), "  solve") ==
+        Words{"solve", "1.00", "50.0", "%"});
+}
