@@ -15,6 +15,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 
 namespace
@@ -123,10 +124,11 @@ namespace
         ltn::print_convergence_table(summary, std::cout);
         std::cout << '\n';
         ltn::print_time_per_phase(summary, std::cout);
-        std::cout << "\nTotal wall time " << summary.total_time
-                  << " s, peak memory " << summary.memory_mb << " MB\n"
-                  << "Output written to " << output_directory << "/"
-                  << std::endl;
+        std::cout << "\nTotal wall time " << std::setprecision(3)
+                  << summary.total_time << " s, peak memory " << std::fixed
+                  << std::setprecision(0) << summary.memory_mb << " MB\n"
+                  << std::defaultfloat << "Output written to "
+                  << output_directory << "/" << std::endl;
       }
   }
 } // namespace
