@@ -205,19 +205,6 @@ namespace ltn
 
 
   TrilinosWrappers::MPI::Vector
-  ModelDirectSolver::free_block_rhs(
-    const TrilinosWrappers::MPI::Vector &b) const
-  {
-    // to_outside's columns are O: b_O alone enters.
-    TrilinosWrappers::MPI::Vector rhs(b), product(b);
-    to_outside.vmult(product, b);
-    rhs -= product;
-    return rhs;
-  }
-
-
-
-  TrilinosWrappers::MPI::Vector
   ModelDirectSolver::free_block_transposed_rhs(
     const TrilinosWrappers::MPI::Vector &g) const
   {
@@ -229,22 +216,6 @@ namespace ltn
     TrilinosWrappers::MPI::Vector rhs(g);
     rhs -= restricted_to(product, free);
     return rhs;
-  }
-
-
-
-  void
-  ModelDirectSolver::complete_constrained(
-    TrilinosWrappers::MPI::Vector       &x,
-    const TrilinosWrappers::MPI::Vector &b) const
-  {
-    if (!any_constrained)
-      return;
-    TrilinosWrappers::MPI::Vector product(x);
-    constraints.vmult(product, x);
-    for (const index h : model.constrained)
-      x(h) = static_cast<double>(b(h)) - static_cast<double>(product(h));
-    x.compress(VectorOperation::insert);
   }
 
 
@@ -285,8 +256,11 @@ namespace ltn
       }
     else
       {
-        direct->solve(x, free_block_rhs(b));
-        complete_constrained(x, b);
+        // One column of the many-column solve, which forms the free
+        // block's right-hand side and completes the constrained rows.
+        std::vector<TrilinosWrappers::MPI::Vector> solution;
+        solve(solution, {b}, false);
+        x = solution.front();
       }
   }
 

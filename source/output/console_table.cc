@@ -1,5 +1,7 @@
 #include <ltn/output/console_table.h>
 
+#include <boost/io/ios_state.hpp>
+
 #include <iomanip>
 #include <sstream>
 
@@ -53,18 +55,8 @@ namespace ltn
     if (levels.empty())
       return;
     // The caller's format comes back whichever way this returns.
-    const struct Restore
-    {
-      std::ostream            &out;
-      const std::ios::fmtflags flags     = out.flags();
-      const std::streamsize    precision = out.precision();
-      ~Restore()
-      {
-        out.flags(flags);
-        out.precision(precision);
-      }
-    } restore{out};
-    const auto seconds = [](const double t) {
+    const boost::io::ios_all_saver restore(out);
+    const auto                     seconds = [](const double t) {
       std::ostringstream s;
       s << std::fixed << std::setprecision(t < 10 ? 2 : 1) << t;
       return s.str();

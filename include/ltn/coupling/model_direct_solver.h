@@ -47,7 +47,12 @@ namespace ltn
           const TrilinosWrappers::MPI::Vector &b,
           const bool                           transpose) const;
 
-    /** The same for all @p b at once, the factors read once. */
+    /**
+     * The same for all @p b at once, the factors read once. Forward: the
+     * free block's right-hand sides `b - M_{.O} b_O` and, after the solve
+     * of `blockdiag(M_FF, I)`, the constrained rows `x_C = b_C - M_C. x`
+     * off the diagonal, each one sparse product with all columns.
+     */
     void
     solve(std::vector<TrilinosWrappers::MPI::Vector>       &x,
           const std::vector<TrilinosWrappers::MPI::Vector> &b,
@@ -58,17 +63,6 @@ namespace ltn
     factorizes_free_block() const;
 
   private:
-    /** `b - M_{.O} b_O`: the right-hand side of `M x = b` for
-     * `blockdiag(M_FF, I)` (its rows C are completed afterwards). */
-    TrilinosWrappers::MPI::Vector
-    free_block_rhs(const TrilinosWrappers::MPI::Vector &b) const;
-
-    /** `x_C = b_C - M_C. x` off the diagonal, after `blockdiag(M_FF, I)`
-     * solved for the rest of `M x = b`. */
-    void
-    complete_constrained(TrilinosWrappers::MPI::Vector       &x,
-                         const TrilinosWrappers::MPI::Vector &b) const;
-
     /** `g - (M_C.^T g_C)_F`: the right-hand side of `M^T y = g` for
      * `blockdiag(M_FF, I)`. */
     TrilinosWrappers::MPI::Vector
