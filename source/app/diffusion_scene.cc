@@ -1,19 +1,10 @@
-#include <deal.II/base/timer.h>
-
 #include <ltn/app/diffusion_scene.h>
-#include <ltn/app/level_solve.h>
-#include <ltn/base/field_errors.h>
 #include <ltn/base/input_error.h>
-#include <ltn/coupling/overlap_quadrature.h>
+#include <ltn/local/poisson_problem.h>
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
 #include <ltn/nonlocal/particle_diffusion.h>
-#include <ltn/output/field_output.h>
-#include <ltn/output/nonlocal_output.h>
 #include <ltn/scene/elasticity_data.h>
 
-#include <cmath>
-#include <iomanip>
-#include <limits>
 #include <memory>
 #include <type_traits>
 
@@ -26,23 +17,114 @@ namespace ltn
     using NonlocalDiffusion =
       std::conditional_t<dim == 1, NonlocalWeakForm1D, ParticleDiffusion<dim>>;
 
+    /** A level of a diffusion scene, for Scene::run_level(). */
     template <int dim>
-    std::unique_ptr<NonlocalDiffusion<dim>>
-    make_nonlocal(const Geometry<dim>      &geometry,
-                  const Kernel             &kernel,
-                  const NonlocalParameters &parameters,
-                  const double              h,
-                  const MPI_Comm            communicator)
+    struct DiffusionLevel
     {
-      if constexpr (dim == 1)
-        return std::make_unique<NonlocalWeakForm1D>(geometry,
-                                                    kernel,
-                                                    parameters.degree,
-                                                    h);
-      else
-        return std::make_unique<ParticleDiffusion<dim>>(
-          geometry, kernel, parameters.particle_spacing(h), communicator);
-    }
+      using Nonlocal = NonlocalDiffusion<dim>;
+      using Local    = PoissonProblem<dim>;
+
+      const Geometry<dim>              &geometry;
+      const NonlocalParameters         &nonlocal_parameters;
+      const LocalParameters<dim>       &local_parameters;
+      const CouplingParameters         &coupling_parameters;
+      const MPI_Comm                    communicator;
+      const double                      h;
+      const Kernel                      kernel;
+      const ProblemData::Functions<dim> data;
+      const double                      eps                = kernel.horizon();
+      const double                      collar_depth       = eps;
+      const std::string                 nonlocal_file      = "nonlocal_field";
+      const std::string                 local_file         = "local_field";
+      const std::string                 dofs_label         = "nonlocal dofs";
+      static constexpr bool             grouped_collection = false;
+
+      std::unique_ptr<Nonlocal>
+      make_nonlocal() const
+      {
+        if constexpr (dim == 1)
+          return std::make_unique<NonlocalWeakForm1D>(
+            geometry, kernel, nonlocal_parameters.degree, h);
+        else
+          return std::make_unique<ParticleDiffusion<dim>>(
+            geometry,
+            kernel,
+            nonlocal_parameters.particle_spacing(h),
+            communicator);
+      }
+
+      std::unique_ptr<Local>
+      make_local() const
+      {
+        return std::make_unique<Local>(geometry,
+                                       local_parameters,
+                                       h,
+                                       communicator);
+      }
+
+      void
+      assemble(Nonlocal &nonlocal) const
+      {
+        if constexpr (dim == 1)
+          nonlocal.assemble(*data.nonlocal_rhs, *data.volume_constraint_data);
+        else
+          nonlocal.assemble(*data.nonlocal_rhs,
+                            *data.volume_constraint_data,
+                            nonlocal_parameters.matrix_free);
+      }
+
+      void
+      assemble(Local &local) const
+      {
+        local.assemble(*data.local_rhs,
+                       *data.boundary_data,
+                       *data.boundary_gradient);
+      }
+
+      const CouplingParameters &
+      coupling() const
+      {
+        return coupling_parameters;
+      }
+
+      const Function<dim> *
+      exact_solution() const
+      {
+        return data.exact_solution.get();
+      }
+
+      types::global_dof_index
+      n_particles(const Nonlocal &nonlocal) const
+      {
+        return nonlocal.get_model().owned.size();
+      }
+
+      /** Diffusion measures nothing beyond the errors. */
+      std::string
+      postprocess(const Nonlocal *,
+                  const Local *,
+                  const CouplingSolution &,
+                  const TrilinosWrappers::MPI::Vector &,
+                  LevelRecord &) const
+      {
+        return "";
+      }
+
+      std::string
+      write_local(const Local                                     &local,
+                  const TrilinosWrappers::MPI::Vector             &field,
+                  const std::function<Region(const Point<dim> &)> &region_of,
+                  const std::string                               &directory,
+                  const std::string                               &name) const
+      {
+        return write_field_vtu<dim>(local.get_dof_handler(),
+                                    field,
+                                    exact_solution(),
+                                    region_of,
+                                    directory,
+                                    name);
+      }
+    };
   } // namespace
 
 
@@ -61,20 +143,7 @@ namespace ltn
     ProblemData::declare_parameters(prm);
     Discretization::declare_parameters(prm);
     CouplingParameters::declare_parameters(prm);
-    prm.enter_subsection("Output");
-    {
-      prm.declare_entry("Directory",
-                        "",
-                        Patterns::Anything(),
-                        "Where the run writes its files. Empty: "
-                        "output/<scene name>. The command line's "
-                        "--output-dir takes precedence.");
-      prm.declare_entry("Write VTU",
-                        "true",
-                        Patterns::Bool(),
-                        "Write the fields of every level as VTU files.");
-    }
-    prm.leave_subsection();
+    Scene<dim>::declare_output_parameters(prm);
   }
 
 
@@ -82,15 +151,10 @@ namespace ltn
   template <int dim>
   DiffusionScene<dim>::DiffusionScene(ParameterHandler  &prm,
                                       const std::string &scene_name)
-    : scene_name(scene_name)
+    : Scene<dim>(prm, scene_name)
   {
     Assert(prm.get_integer("Dimension") == dim, ExcInternalError());
-    geometry.parse_parameters(prm);
-    nonlocal_parameters.parse_parameters(prm);
-    local_parameters.parse_parameters(prm);
     problem_data.parse_parameters(prm);
-    discretization.parse_parameters(prm);
-    coupling_parameters.parse_parameters(prm);
     check_input(dim > 1 || !nonlocal_parameters.matrix_free,
                 "Nonlocal model/Operator",
                 "matrix-free",
@@ -111,11 +175,6 @@ namespace ltn
     coupling_parameters.check_operator(nonlocal_parameters.matrix_free,
                                        geometry.has_local_model() &&
                                          geometry.has_nonlocal_model());
-    prm.enter_subsection("Output");
-    output_directory = prm.get("Directory");
-    write_vtu        = prm.get_bool("Write VTU");
-    prm.leave_subsection();
-
     check_input(local_parameters.dirichlet_components.empty(),
                 "Local model/Dirichlet components",
                 local_parameters.dirichlet_components_text,
@@ -180,213 +239,23 @@ namespace ltn
   DiffusionScene<dim>::run(const std::string  &output_directory,
                            ConditionalOStream &out)
   {
-    Timer total_timer;
-    solutions.clear();
-    // 2D and 3D models are distributed over all ranks; the 1D ones are
-    // serial (p4est has no 1D meshes), every rank solving all of it.
-    const MPI_Comm communicator = (dim == 1) ? MPI_COMM_SELF : MPI_COMM_WORLD;
-
-    RunSummary summary;
-    summary.scene = scene_name;
-    summary.dim   = dim;
-    summary.model = "diffusion";
-
-    std::vector<std::pair<double, std::string>> nonlocal_files, local_files;
-
-    for (unsigned int level = 0; level < discretization.n_levels; ++level)
-      {
-        const double h      = discretization.mesh_size(level);
+    return this->run_levels(
+      "diffusion", output_directory, out, [&](const double h) {
         const Kernel kernel = nonlocal_parameters.kernel(dim, h);
-        const double eps    = kernel.horizon();
-        const auto   data   = problem_data.functions<dim>(kernel, h);
-
-        // The models of the scene: both, or one on the whole body. The local
-        // mesh may be refined adaptively within a level.
-        std::unique_ptr<NonlocalDiffusion<dim>> nonlocal;
-        std::unique_ptr<PoissonProblem<dim>>    local;
-        CouplingSolution                        solution;
-
-        for (unsigned int cycle = 0;
-             cycle <= (geometry.has_local_model() ?
-                         local_parameters.adaptive_cycles :
-                         0);
-             ++cycle)
-          {
-            ConditionalOStream silent(out.get_stream(), false);
-            TimerOutput        timer(silent,
-                              TimerOutput::never,
-                              TimerOutput::wall_times);
-            LevelRecord        record;
-            record.h       = h;
-            record.horizon = eps;
-            record.cycle   = cycle;
-
-            timer.enter_subsection("setup meshes");
-            if (cycle == 0)
-              {
-                if (geometry.has_nonlocal_model())
-                  nonlocal = make_nonlocal<dim>(
-                    geometry, kernel, nonlocal_parameters, h, communicator);
-                if (geometry.has_local_model())
-                  local = std::make_unique<PoissonProblem<dim>>(
-                    geometry, local_parameters, h, communicator);
-              }
-            else
-              // In 2D/3D the particles of the overlap observe the local field:
-              // its cells there keep at least p particle spacings (see the
-              // check of the spacing in the constructor).
-              local->refine(solution.fields[local_model],
-                            [&](const Point<dim> &center, const double size) {
-                              return dim == 1 || !nonlocal ||
-                                     !geometry.in_overlap(center, eps + size) ||
-                                     size / 2 >=
-                                       local_parameters.degree *
-                                         nonlocal_parameters.particle_spacing(
-                                           h) *
-                                         (1 - 1e-12);
-                            });
-            timer.leave_subsection();
-
-            if (nonlocal && cycle == 0)
-              {
-                timer.enter_subsection("assemble nonlocal");
-                if constexpr (dim == 1)
-                  nonlocal->assemble(*data.nonlocal_rhs,
-                                     *data.volume_constraint_data);
-                else
-                  nonlocal->assemble(*data.nonlocal_rhs,
-                                     *data.volume_constraint_data,
-                                     nonlocal_parameters.matrix_free);
-                timer.leave_subsection();
-              }
-            if (local)
-              {
-                timer.enter_subsection("assemble local");
-                local->assemble(*data.local_rhs,
-                                *data.boundary_data,
-                                *data.boundary_gradient);
-                timer.leave_subsection();
-              }
-
-            OverlapQuadrature<dim> overlap;
-            if (nonlocal && local)
-              {
-                timer.enter_subsection("assemble coupling");
-                overlap = create_overlap_quadrature(geometry,
-                                                    eps,
-                                                    *nonlocal,
-                                                    local->get_dof_handler());
-                timer.leave_subsection();
-              }
-            timer.enter_subsection("solve");
-            solution = solve_level(nonlocal ? &nonlocal->get_model() : nullptr,
-                                   local ? &local->get_model() : nullptr,
-                                   overlap,
+        // 2D and 3D models are distributed over all ranks; the 1D ones are
+        // serial (p4est has no 1D meshes), every rank solving all of it.
+        return DiffusionLevel<dim>{geometry,
+                                   nonlocal_parameters,
+                                   local_parameters,
                                    coupling_parameters,
-                                   record);
-            timer.leave_subsection();
-            solutions.push_back(solution);
-
-            timer.enter_subsection("postprocess");
-            record.n_nonlocal_dofs =
-              nonlocal ? nonlocal->get_model().owned.size() : 0;
-            record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
-            record.n_particles  = record.n_nonlocal_dofs;
-            if (data.exact_solution)
-              {
-                const ErrorNorms nonlocal_errors =
-                  nonlocal ? nonlocal->errors(solution.fields[nonlocal_model],
-                                              *data.exact_solution) :
-                             ErrorNorms();
-                record_errors<dim>(nonlocal ? &nonlocal_errors : nullptr,
-                                   local ? &local->get_dof_handler() : nullptr,
-                                   local ? local->get_model().ghosted(
-                                             solution.fields[local_model]) :
-                                           TrilinosWrappers::MPI::Vector(),
-                                   *data.exact_solution,
-                                   geometry.nonlocal_region,
-                                   geometry.tolerance(),
-                                   record);
-              }
-            timer.leave_subsection();
-
-            if (!output_directory.empty() && write_vtu)
-              {
-                timer.enter_subsection("output");
-                // One file per solve: level, or level and adaptive cycle.
-                const unsigned int step = summary.levels.size();
-                const std::string  suffix =
-                  "_level-" + Utilities::int_to_string(step, 2);
-                if (nonlocal)
-                  {
-                    nonlocal_files.emplace_back(
-                      step,
-                      write_nonlocal_vtu(*nonlocal,
-                                         solution.fields[nonlocal_model],
-                                         data.exact_solution.get(),
-                                         output_directory,
-                                         "nonlocal_field" + suffix));
-                    write_level_collection(output_directory +
-                                             "/nonlocal_field.pvd",
-                                           nonlocal_files);
-                  }
-                if (local)
-                  {
-                    local_files.emplace_back(
-                      step,
-                      write_field_vtu<dim>(
-                        local->get_dof_handler(),
-                        local->get_model().ghosted(
-                          solution.fields[local_model]),
-                        data.exact_solution.get(),
-                        [&](const Point<dim> &p) {
-                          return geometry.local_region_of(p, eps);
-                        },
-                        output_directory,
-                        "local_field" + suffix));
-                    write_level_collection(output_directory +
-                                             "/local_field.pvd",
-                                           local_files);
-                  }
-                timer.leave_subsection();
-              }
-
-            record_timings(timer, record);
-
-            out << "level " << level
-                << (cycle > 0 ? ", cycle " + std::to_string(cycle) :
-                                std::string())
-                << ": h = " << h << ", eps = " << eps
-                << ", nonlocal dofs = " << record.n_nonlocal_dofs
-                << ", local dofs = " << record.n_local_dofs
-                << ", controls = " << record.n_controls
-                << ", iterations = " << record.iterations
-                << ", J = " << std::scientific << std::setprecision(3)
-                << record.mismatch_J << std::defaultfloat << std::endl;
-            summary.levels.push_back(record);
-          }
-      }
-    summary.total_time = total_timer.wall_time();
-    return summary;
+                                   (dim == 1) ? MPI_COMM_SELF : MPI_COMM_WORLD,
+                                   h,
+                                   kernel,
+                                   problem_data.functions<dim>(kernel, h)};
+      });
   }
 
 
-
-  template <int dim>
-  const std::vector<CouplingSolution> &
-  DiffusionScene<dim>::get_solutions() const
-  {
-    return solutions;
-  }
-
-
-
-  template <int dim>
-  const std::string &
-  DiffusionScene<dim>::get_output_directory() const
-  {
-    return output_directory;
-  }
 
   template class DiffusionScene<1>;
   template class DiffusionScene<2>;

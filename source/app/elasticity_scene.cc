@@ -1,15 +1,9 @@
-#include <deal.II/base/timer.h>
-
 #include <ltn/app/elasticity_scene.h>
-#include <ltn/app/level_solve.h>
 #include <ltn/base/discrete_model.h>
 #include <ltn/base/input_error.h>
-#include <ltn/coupling/overlap_quadrature.h>
 #include <ltn/local/elasticity_problem.h>
 #include <ltn/nonlocal/particle_elasticity.h>
 #include <ltn/output/elasticity_output.h>
-#include <ltn/output/field_output.h>
-#include <ltn/output/nonlocal_output.h>
 
 #include <cmath>
 #include <iomanip>
@@ -140,6 +134,242 @@ namespace ltn
         array.push_back(values[i]);
       return array;
     }
+
+    /** A level of an elasticity scene, for Scene::run_level(). */
+    template <int dim>
+    struct ElasticityLevel
+    {
+      using Nonlocal = ParticleElasticity<dim>;
+      using Local    = ElasticityProblem<dim>;
+
+      const Geometry<dim>                                &geometry;
+      const NonlocalParameters                           &nonlocal_parameters;
+      const LocalParameters<dim>                         &local_parameters;
+      const CouplingParameters                           &coupling_parameters;
+      const Material                                     &material;
+      const CrackSet<dim>                                &crack_set;
+      const std::vector<std::pair<unsigned int, double>> &section_planes;
+      const std::string                   &reference_crack_opening;
+      const double                         h;
+      const Kernel                         influence;
+      const ElasticityData::Functions<dim> f;
+      const double                         eps = influence.horizon();
+      // LPS reads two horizons out: the dilatations of the particles next to
+      // Omega_n need their own neighbourhoods.
+      const double          collar_depth       = 2 * eps;
+      const std::string     nonlocal_file      = "particles";
+      const std::string     local_file         = "local_mesh";
+      const std::string     dofs_label         = "particle dofs";
+      static constexpr bool grouped_collection = true;
+
+      std::unique_ptr<Nonlocal>
+      make_nonlocal() const
+      {
+        return std::make_unique<Nonlocal>(geometry,
+                                          influence,
+                                          nonlocal_parameters.particle_spacing(
+                                            h),
+                                          material.lambda(dim),
+                                          material.mu(),
+                                          crack_set.cracks,
+                                          MPI_COMM_WORLD);
+      }
+
+      std::unique_ptr<Local>
+      make_local() const
+      {
+        return std::make_unique<Local>(geometry,
+                                       local_parameters,
+                                       material.lambda(dim),
+                                       material.mu(),
+                                       h,
+                                       MPI_COMM_WORLD);
+      }
+
+      void
+      assemble(Nonlocal &nonlocal) const
+      {
+        nonlocal.assemble(*f.body_force,
+                          *f.volume_constraint_data,
+                          nonlocal_parameters.matrix_free);
+      }
+
+      void
+      assemble(Local &local) const
+      {
+        local.assemble(*f.body_force,
+                       *f.boundary_data,
+                       *f.traction,
+                       *f.pressure);
+      }
+
+      CouplingParameters
+      coupling() const
+      {
+        return coupling_parameters.at_lps_level(geometry.overlap_width / eps,
+                                                crack_opening_fields(
+                                                  crack_set.cracks),
+                                                dim);
+      }
+
+      const Function<dim> *
+      exact_solution() const
+      {
+        return f.exact_solution.get();
+      }
+
+      types::global_dof_index
+      n_particles(const Nonlocal &nonlocal) const
+      {
+        return nonlocal.get_lattice().n_particles();
+      }
+
+      /**
+       * What a user of fracture mechanics checks: the force through the
+       * section planes, the resultant of the applied loads, the opening of
+       * every crack (into `record.extras`, and the report's lines).
+       */
+      std::string
+      postprocess(const Nonlocal                      *nonlocal,
+                  const Local                         *local,
+                  const CouplingSolution              &solution,
+                  const TrilinosWrappers::MPI::Vector &local_field,
+                  LevelRecord                         &record) const;
+
+      std::string
+      write_local(const Local                                     &local,
+                  const TrilinosWrappers::MPI::Vector             &field,
+                  const std::function<Region(const Point<dim> &)> &region_of,
+                  const std::string                               &directory,
+                  const std::string                               &name) const
+      {
+        return write_elasticity_vtu<dim>(local.get_dof_handler(),
+                                         field,
+                                         material,
+                                         exact_solution(),
+                                         region_of,
+                                         directory,
+                                         name);
+      }
+    };
+
+
+
+    template <int dim>
+    std::string
+    ElasticityLevel<dim>::postprocess(
+      const Nonlocal                      *nonlocal,
+      const Local                         *local,
+      const CouplingSolution              &solution,
+      const TrilinosWrappers::MPI::Vector &local_field,
+      LevelRecord                         &record) const
+    {
+      JsonValue          mechanics = JsonValue::object();
+      std::ostringstream report;
+      report << std::setprecision(6);
+      if (local)
+        {
+          JsonValue sections = JsonValue::array();
+          for (const auto &[d, c] : section_planes)
+            {
+              const Tensor<1, dim> force =
+                local->section_force(local_field, d, c);
+              double area = 1;
+              for (unsigned int e = 0; e < dim; ++e)
+                if (e != d)
+                  area *= geometry.body.upper[e] - geometry.body.lower[e];
+              JsonValue entry = JsonValue::object();
+              entry["plane"]  = std::string(1, "xyz"[d]) + "=" + to_string(c);
+              entry["force"]  = tensor_to_json(force.begin_raw(), dim);
+              entry["mean_stress"] = force[d] / area;
+              report << "  force through "
+                     << "xyz"[d] << " = " << c << ": " << force
+                     << " (mean stress " << force[d] / area << ")\n";
+              sections.push_back(entry);
+            }
+          mechanics["section_forces"] = sections;
+          JsonValue applied           = JsonValue::array();
+          for (unsigned int face = 0; face < 2 * dim; ++face)
+            if (local_parameters.dirichlet_mask(face, dim)
+                  .n_selected_components() < dim)
+              {
+                const Tensor<1, dim> force =
+                  local->applied_force(*f.traction, *f.pressure, face);
+                if (force.norm() > 0)
+                  report << "  applied force on "
+                         << Geometry<dim>::face_name(face) << ": " << force
+                         << "\n";
+                JsonValue entry = JsonValue::object();
+                entry["face"]   = Geometry<dim>::face_name(face);
+                entry["force"]  = tensor_to_json(force.begin_raw(), dim);
+                applied.push_back(entry);
+              }
+          mechanics["applied_forces"] = applied;
+        }
+      if (nonlocal)
+        {
+          JsonValue                        openings = JsonValue::array();
+          std::unique_ptr<Expression<dim>> reference;
+          if (!reference_crack_opening.empty())
+            reference = std::make_unique<Expression<dim>>(
+              "Postprocess/Reference crack opening",
+              reference_crack_opening,
+              std::map<std::string, double>{{"E", material.youngs_modulus},
+                                            {"nu", material.poisson_ratio},
+                                            {"lambda", material.lambda(dim)},
+                                            {"mu", material.mu()},
+                                            {"Eprime",
+                                             material.crack_modulus(dim)},
+                                            {"pi", numbers::PI},
+                                            {"eps", eps},
+                                            {"h", h}});
+          for (unsigned int k = 0; k < crack_set.cracks.size(); ++k)
+            {
+              const auto opening =
+                nonlocal->crack_opening(solution.fields[nonlocal_model], k);
+              JsonValue entry  = JsonValue::object();
+              JsonValue points = JsonValue::array();
+              JsonValue values = JsonValue::array();
+              double    max = 0, difference = 0, norm = 0;
+              for (std::size_t i = 0; i < opening.points.size(); ++i)
+                {
+                  points.push_back(
+                    tensor_to_json(opening.points[i].begin_raw(), dim));
+                  values.push_back(opening.opening[i]);
+                  max = std::max(max, opening.opening[i]);
+                  if (reference)
+                    {
+                      const double r = reference->value(opening.points[i]);
+                      difference += std::pow(opening.opening[i] - r, 2);
+                      norm += r * r;
+                    }
+                }
+              const bool sampled  = !opening.points.empty();
+              const bool compared = reference && sampled && norm > 0;
+              report << "  crack " << k << ": ";
+              if (sampled)
+                report << "opening at " << opening.points.size()
+                       << " particle pairs, max " << max;
+              else
+                report << "not measured: no particles face each other "
+                          "across it half a spacing away";
+              if (compared)
+                report << ", relative L2 difference to the reference "
+                       << std::sqrt(difference / norm);
+              report << "\n";
+              entry["points"]      = points;
+              entry["opening"]     = values;
+              entry["max_opening"] = sampled ? JsonValue(max) : JsonValue();
+              if (compared)
+                entry["relative_l2_difference_to_reference"] =
+                  std::sqrt(difference / norm);
+              openings.push_back(entry);
+            }
+          mechanics["crack_openings"] = openings;
+        }
+      record.extras = mechanics;
+      return report.str();
+    }
   } // namespace
 
 
@@ -181,23 +411,14 @@ namespace ltn
   template <int dim>
   ElasticityScene<dim>::ElasticityScene(ParameterHandler  &prm,
                                         const std::string &scene_name)
-    : scene_name(scene_name)
+    : Scene<dim>(prm, scene_name)
   {
-    geometry.parse_parameters(prm);
-    nonlocal_parameters.parse_parameters(prm);
-    local_parameters.parse_parameters(prm);
     material.parse_parameters(prm);
     crack_set.parse_parameters(prm);
     data.parse_parameters(prm);
-    discretization.parse_parameters(prm);
-    coupling_parameters.parse_parameters(prm);
     coupling_parameters.check_operator(nonlocal_parameters.matrix_free,
                                        geometry.has_local_model() &&
                                          geometry.has_nonlocal_model());
-    prm.enter_subsection("Output");
-    output_directory = prm.get("Directory");
-    write_vtu        = prm.get_bool("Write VTU");
-    prm.leave_subsection();
     prm.enter_subsection("Postprocess");
     const std::string planes = prm.get("Section planes");
     reference_crack_opening  = prm.get("Reference crack opening");
@@ -288,324 +509,26 @@ namespace ltn
   ElasticityScene<dim>::run(const std::string  &output_directory,
                             ConditionalOStream &out)
   {
-    Timer total_timer;
-    solutions.clear();
-    const MPI_Comm communicator = MPI_COMM_WORLD;
-    const double   lambda = material.lambda(dim), mu = material.mu();
-
-    RunSummary summary;
-    summary.scene = scene_name;
-    summary.dim   = dim;
-    summary.model = "elasticity";
-
-    std::vector<std::pair<double, std::string>> nonlocal_files, local_files;
-
-    for (unsigned int level = 0; level < discretization.n_levels; ++level)
-      {
-        const double h         = discretization.mesh_size(level);
-        const double spacing   = nonlocal_parameters.particle_spacing(h);
+    return this->run_levels(
+      "elasticity", output_directory, out, [&](const double h) {
         const Kernel influence = nonlocal_parameters.kernel(dim, h);
-        const double eps       = influence.horizon();
-        const auto   f         = data.functions<dim>(material, eps, h);
-
-        std::unique_ptr<ParticleElasticity<dim>> nonlocal;
-        std::unique_ptr<ElasticityProblem<dim>>  local;
-        CouplingSolution                         solution;
-
-        for (unsigned int cycle = 0;
-             cycle <= (geometry.has_local_model() ?
-                         local_parameters.adaptive_cycles :
-                         0);
-             ++cycle)
-          {
-            ConditionalOStream silent(out.get_stream(), false);
-            TimerOutput        timer(silent,
-                              TimerOutput::never,
-                              TimerOutput::wall_times);
-            LevelRecord        record;
-            record.h       = h;
-            record.horizon = eps;
-            record.cycle   = cycle;
-
-            timer.enter_subsection("setup meshes");
-            if (cycle == 0)
-              {
-                if (geometry.has_nonlocal_model())
-                  nonlocal =
-                    std::make_unique<ParticleElasticity<dim>>(geometry,
-                                                              influence,
-                                                              spacing,
-                                                              lambda,
-                                                              mu,
-                                                              crack_set.cracks,
-                                                              communicator);
-                if (geometry.has_local_model())
-                  local = std::make_unique<ElasticityProblem<dim>>(
-                    geometry, local_parameters, lambda, mu, h, communicator);
-              }
-            else
-              // The particles of the overlap must keep observing the local
-              // field: its cells there keep at least p particle spacings.
-              local->refine(solution.fields[local_model],
-                            [&](const Point<dim> &center, const double size) {
-                              return !nonlocal ||
-                                     !geometry.in_overlap(center,
-                                                          2 * eps + size) ||
-                                     size / 2 >= local_parameters.degree *
-                                                   spacing * (1 - 1e-12);
-                            });
-            timer.leave_subsection();
-
-            if (nonlocal && cycle == 0)
-              {
-                timer.enter_subsection("assemble nonlocal");
-                nonlocal->assemble(*f.body_force,
-                                   *f.volume_constraint_data,
-                                   nonlocal_parameters.matrix_free);
-                timer.leave_subsection();
-              }
-            if (local)
-              {
-                timer.enter_subsection("assemble local");
-                local->assemble(*f.body_force,
-                                *f.boundary_data,
-                                *f.traction,
-                                *f.pressure);
-                timer.leave_subsection();
-              }
-
-            OverlapQuadrature<dim> overlap;
-            if (nonlocal && local)
-              {
-                timer.enter_subsection("assemble coupling");
-                overlap = create_overlap_quadrature(geometry,
-                                                    eps,
-                                                    *nonlocal,
-                                                    local->get_dof_handler());
-                timer.leave_subsection();
-              }
-            timer.enter_subsection("solve");
-            solution = solve_level(nonlocal ? &nonlocal->get_model() : nullptr,
-                                   local ? &local->get_model() : nullptr,
-                                   overlap,
-                                   coupling_parameters.at_lps_level(
-                                     geometry.overlap_width / eps,
-                                     crack_opening_fields(crack_set.cracks),
-                                     dim),
-                                   record);
-            timer.leave_subsection();
-            solutions.push_back(solution);
-
-            timer.enter_subsection("postprocess");
-            record.n_nonlocal_dofs =
-              nonlocal ? nonlocal->get_model().owned.size() : 0;
-            record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
-            record.n_particles =
-              nonlocal ? nonlocal->get_lattice().n_particles() : 0;
-            const auto local_field =
-              local ? local->get_model().ghosted(solution.fields[local_model]) :
-                      TrilinosWrappers::MPI::Vector();
-            if (f.exact_solution)
-              {
-                const ErrorNorms nonlocal_errors =
-                  nonlocal ? nonlocal->errors(solution.fields[nonlocal_model],
-                                              *f.exact_solution) :
-                             ErrorNorms();
-                record_errors<dim>(nonlocal ? &nonlocal_errors : nullptr,
-                                   local ? &local->get_dof_handler() : nullptr,
-                                   local_field,
-                                   *f.exact_solution,
-                                   geometry.nonlocal_region,
-                                   geometry.tolerance(),
-                                   record);
-              }
-
-            JsonValue          mechanics = JsonValue::object();
-            std::ostringstream report;
-            report << std::setprecision(6);
-            if (local)
-              {
-                JsonValue sections = JsonValue::array();
-                for (const auto &[d, c] : section_planes)
-                  {
-                    const Tensor<1, dim> force =
-                      local->section_force(local_field, d, c);
-                    double area = 1;
-                    for (unsigned int e = 0; e < dim; ++e)
-                      if (e != d)
-                        area *= geometry.body.upper[e] - geometry.body.lower[e];
-                    JsonValue entry = JsonValue::object();
-                    entry["plane"] =
-                      std::string(1, "xyz"[d]) + "=" + to_string(c);
-                    entry["force"] = tensor_to_json(force.begin_raw(), dim);
-                    entry["mean_stress"] = force[d] / area;
-                    report << "  force through "
-                           << "xyz"[d] << " = " << c << ": " << force
-                           << " (mean stress " << force[d] / area << ")\n";
-                    sections.push_back(entry);
-                  }
-                mechanics["section_forces"] = sections;
-                JsonValue applied           = JsonValue::array();
-                for (unsigned int face = 0; face < 2 * dim; ++face)
-                  if (local_parameters.dirichlet_mask(face, dim)
-                        .n_selected_components() < dim)
-                    {
-                      const Tensor<1, dim> force =
-                        local->applied_force(*f.traction, *f.pressure, face);
-                      if (force.norm() > 0)
-                        report << "  applied force on "
-                               << Geometry<dim>::face_name(face) << ": "
-                               << force << "\n";
-                      JsonValue entry = JsonValue::object();
-                      entry["face"]   = Geometry<dim>::face_name(face);
-                      entry["force"]  = tensor_to_json(force.begin_raw(), dim);
-                      applied.push_back(entry);
-                    }
-                mechanics["applied_forces"] = applied;
-              }
-            if (nonlocal)
-              {
-                JsonValue                        openings = JsonValue::array();
-                std::unique_ptr<Expression<dim>> reference;
-                if (!reference_crack_opening.empty())
-                  reference = std::make_unique<Expression<dim>>(
-                    "Postprocess/Reference crack opening",
-                    reference_crack_opening,
-                    std::map<std::string, double>{
-                      {"E", material.youngs_modulus},
-                      {"nu", material.poisson_ratio},
-                      {"lambda", lambda},
-                      {"mu", mu},
-                      {"Eprime", material.crack_modulus(dim)},
-                      {"pi", numbers::PI},
-                      {"eps", eps},
-                      {"h", h}});
-                for (unsigned int k = 0; k < crack_set.cracks.size(); ++k)
-                  {
-                    const auto opening =
-                      nonlocal->crack_opening(solution.fields[nonlocal_model],
-                                              k);
-                    JsonValue entry  = JsonValue::object();
-                    JsonValue points = JsonValue::array();
-                    JsonValue values = JsonValue::array();
-                    double    max = 0, difference = 0, norm = 0;
-                    for (std::size_t i = 0; i < opening.points.size(); ++i)
-                      {
-                        points.push_back(
-                          tensor_to_json(opening.points[i].begin_raw(), dim));
-                        values.push_back(opening.opening[i]);
-                        max = std::max(max, opening.opening[i]);
-                        if (reference)
-                          {
-                            const double r =
-                              reference->value(opening.points[i]);
-                            difference += std::pow(opening.opening[i] - r, 2);
-                            norm += r * r;
-                          }
-                      }
-                    const bool sampled  = !opening.points.empty();
-                    const bool compared = reference && sampled && norm > 0;
-                    report << "  crack " << k << ": ";
-                    if (sampled)
-                      report << "opening at " << opening.points.size()
-                             << " particle pairs, max " << max;
-                    else
-                      report << "not measured: no particles face each other "
-                                "across it half a spacing away";
-                    if (compared)
-                      report << ", relative L2 difference to the reference "
-                             << std::sqrt(difference / norm);
-                    report << "\n";
-                    entry["points"]  = points;
-                    entry["opening"] = values;
-                    entry["max_opening"] =
-                      sampled ? JsonValue(max) : JsonValue();
-                    if (compared)
-                      entry["relative_l2_difference_to_reference"] =
-                        std::sqrt(difference / norm);
-                    openings.push_back(entry);
-                  }
-                mechanics["crack_openings"] = openings;
-              }
-            record.extras = mechanics;
-            timer.leave_subsection();
-
-            if (!output_directory.empty() && write_vtu)
-              {
-                timer.enter_subsection("output");
-                const unsigned int step = summary.levels.size();
-                const std::string  suffix =
-                  "_level-" + Utilities::int_to_string(step, 2);
-                if (nonlocal)
-                  {
-                    nonlocal_files.emplace_back(
-                      step,
-                      write_nonlocal_vtu(*nonlocal,
-                                         solution.fields[nonlocal_model],
-                                         f.exact_solution.get(),
-                                         output_directory,
-                                         "particles" + suffix));
-                    write_level_collection(output_directory + "/particles.pvd",
-                                           nonlocal_files);
-                  }
-                if (local)
-                  {
-                    local_files.emplace_back(
-                      step,
-                      write_elasticity_vtu<dim>(
-                        local->get_dof_handler(),
-                        local_field,
-                        material,
-                        f.exact_solution.get(),
-                        [&](const Point<dim> &p) {
-                          return geometry.local_region_of(p, 2 * eps);
-                        },
-                        output_directory,
-                        "local_mesh" + suffix));
-                    write_level_collection(output_directory + "/local_mesh.pvd",
-                                           local_files);
-                  }
-                write_grouped_collection(output_directory + "/scene.pvd",
-                                         {nonlocal_files, local_files});
-                timer.leave_subsection();
-              }
-            record_timings(timer, record);
-
-            out << "level " << level
-                << (cycle > 0 ? ", cycle " + std::to_string(cycle) :
-                                std::string())
-                << ": h = " << h << ", eps = " << eps
-                << ", particle dofs = " << record.n_nonlocal_dofs
-                << ", local dofs = " << record.n_local_dofs
-                << ", controls = " << record.n_controls
-                << ", iterations = " << record.iterations
-                << ", J = " << std::scientific << std::setprecision(3)
-                << record.mismatch_J << std::defaultfloat << std::endl
-                << report.str();
-            summary.levels.push_back(record);
-          }
-      }
-    summary.total_time = total_timer.wall_time();
-    return summary;
+        return ElasticityLevel<dim>{geometry,
+                                    nonlocal_parameters,
+                                    local_parameters,
+                                    coupling_parameters,
+                                    material,
+                                    crack_set,
+                                    section_planes,
+                                    reference_crack_opening,
+                                    h,
+                                    influence,
+                                    data.functions<dim>(material,
+                                                        influence.horizon(),
+                                                        h)};
+      });
   }
 
 
-
-  template <int dim>
-  const std::vector<CouplingSolution> &
-  ElasticityScene<dim>::get_solutions() const
-  {
-    return solutions;
-  }
-
-
-
-  template <int dim>
-  const std::string &
-  ElasticityScene<dim>::get_output_directory() const
-  {
-    return output_directory;
-  }
 
   template class ElasticityScene<2>;
   template class ElasticityScene<3>;

@@ -3,18 +3,10 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <ltn/coupling/coupling_parameters.h>
-#include <ltn/coupling/coupling_system.h>
-#include <ltn/local/local_parameters.h>
-#include <ltn/local/poisson_problem.h>
-#include <ltn/nonlocal/nonlocal_parameters.h>
-#include <ltn/output/run_summary.h>
-#include <ltn/scene/discretization.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/app/scene.h>
 #include <ltn/scene/problem_data.h>
 
 #include <string>
-#include <vector>
 
 namespace ltn
 {
@@ -28,11 +20,9 @@ namespace ltn
    * solved, level by level, by the method the `Coupling` subsection selects.
    */
   template <int dim>
-  class DiffusionScene
+  class DiffusionScene : public Scene<dim>
   {
   public:
-    static constexpr int dimension = dim;
-
     /** Declare the parameters of the scene and of everything it uses. */
     static void
     declare_parameters(ParameterHandler &prm);
@@ -43,31 +33,16 @@ namespace ltn
      */
     DiffusionScene(ParameterHandler &prm, const std::string &scene_name);
 
-    /**
-     * Solve every level; write VTU files into @p output_directory when it is
-     * not empty and `Output/Write VTU` is set. Progress goes to @p out.
-     */
     RunSummary
-    run(const std::string &output_directory, ConditionalOStream &out);
-
-    /** The solution of each level of the last run (for tests). */
-    const std::vector<CouplingSolution> &
-    get_solutions() const;
-
-    /** `Output/Directory`: empty unless the scene names one. */
-    const std::string &
-    get_output_directory() const;
+    run(const std::string &output_directory, ConditionalOStream &out) override;
 
   private:
-    std::string                   scene_name;
-    Geometry<dim>                 geometry;
-    NonlocalParameters            nonlocal_parameters;
-    LocalParameters<dim>          local_parameters;
-    ProblemData                   problem_data;
-    Discretization                discretization;
-    CouplingParameters            coupling_parameters;
-    bool                          write_vtu = true;
-    std::string                   output_directory;
-    std::vector<CouplingSolution> solutions;
+    using Scene<dim>::geometry;
+    using Scene<dim>::nonlocal_parameters;
+    using Scene<dim>::local_parameters;
+    using Scene<dim>::discretization;
+    using Scene<dim>::coupling_parameters;
+
+    ProblemData problem_data;
   };
 } // namespace ltn

@@ -3,15 +3,9 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <ltn/coupling/coupling_parameters.h>
-#include <ltn/coupling/coupling_system.h>
-#include <ltn/local/local_parameters.h>
-#include <ltn/nonlocal/nonlocal_parameters.h>
-#include <ltn/output/run_summary.h>
+#include <ltn/app/scene.h>
 #include <ltn/scene/crack.h>
-#include <ltn/scene/discretization.h>
 #include <ltn/scene/elasticity_data.h>
-#include <ltn/scene/geometry.h>
 #include <ltn/scene/material.h>
 
 #include <string>
@@ -33,11 +27,9 @@ namespace ltn
    * and the opening of every crack.
    */
   template <int dim>
-  class ElasticityScene
+  class ElasticityScene : public Scene<dim>
   {
   public:
-    static constexpr int dimension = dim;
-
     /** Declare the parameters only elasticity scenes have. */
     static void
     declare_parameters(ParameterHandler &prm);
@@ -48,36 +40,21 @@ namespace ltn
      */
     ElasticityScene(ParameterHandler &prm, const std::string &scene_name);
 
-    /**
-     * Solve every level; write VTU files into @p output_directory when it is
-     * not empty and `Output/Write VTU` is set. Progress goes to @p out.
-     */
     RunSummary
-    run(const std::string &output_directory, ConditionalOStream &out);
-
-    /** The solution of each level of the last run (for tests). */
-    const std::vector<CouplingSolution> &
-    get_solutions() const;
-
-    /** `Output/Directory`: empty unless the scene names one. */
-    const std::string &
-    get_output_directory() const;
+    run(const std::string &output_directory, ConditionalOStream &out) override;
 
   private:
-    std::string          scene_name;
-    Geometry<dim>        geometry;
-    NonlocalParameters   nonlocal_parameters;
-    LocalParameters<dim> local_parameters;
-    Material             material;
-    CrackSet<dim>        crack_set;
-    ElasticityData       data;
-    Discretization       discretization;
-    CouplingParameters   coupling_parameters;
-    bool                 write_vtu = true;
-    std::string          output_directory;
+    using Scene<dim>::geometry;
+    using Scene<dim>::nonlocal_parameters;
+    using Scene<dim>::local_parameters;
+    using Scene<dim>::discretization;
+    using Scene<dim>::coupling_parameters;
+
+    Material       material;
+    CrackSet<dim>  crack_set;
+    ElasticityData data;
     /** Planes `x_d = c` through which the force is measured. */
     std::vector<std::pair<unsigned int, double>> section_planes;
     std::string                                  reference_crack_opening;
-    std::vector<CouplingSolution>                solutions;
   };
 } // namespace ltn
