@@ -58,35 +58,20 @@ namespace ltn
     const double                mu,
     const double                h,
     const MPI_Comm              communicator)
-    : parameters(parameters)
+    : Base(geometry,
+           parameters,
+           h,
+           communicator,
+           FE_Q<dim>(parameters.degree),
+           dim)
     , lambda_value(lambda)
     , mu_value(mu)
     , tolerance(geometry.tolerance())
-    , communicator(communicator)
-    , mesh(geometry, h, parameters.graded_mesh_layers, communicator)
-    , fe(FE_Q<dim>(parameters.degree), dim)
-    , dof_handler(mesh.get_triangulation())
   {
     // Strongly elliptic (the energy of any nonzero strain is positive).
     AssertThrow(mu > 0 && lambda + 2. * mu / dim > 0,
                 ExcMessage("the Lamé parameters must satisfy mu > 0 and "
                            "lambda + 2 mu / dim > 0"));
-    setup_local_dofs(dof_handler, fe, communicator, hanging_nodes, model);
-  }
-
-
-
-  template <int dim>
-  void
-  ElasticityProblem<dim>::refine(
-    const TrilinosWrappers::MPI::Vector                   &solution,
-    const std::function<bool(const Point<dim> &, double)> &may_refine)
-  {
-    mesh.refine(dof_handler,
-                model.ghosted(solution),
-                parameters.refinement_fraction,
-                may_refine);
-    setup_local_dofs(dof_handler, fe, communicator, hanging_nodes, model);
   }
 
 
@@ -312,24 +297,6 @@ namespace ltn
                          fe_face_values.JxW(q);
             }
     return Utilities::MPI::sum(force, communicator);
-  }
-
-
-
-  template <int dim>
-  const DoFHandler<dim> &
-  ElasticityProblem<dim>::get_dof_handler() const
-  {
-    return dof_handler;
-  }
-
-
-
-  template <int dim>
-  const DiscreteModel &
-  ElasticityProblem<dim>::get_model() const
-  {
-    return model;
   }
 
 

@@ -16,29 +16,8 @@ namespace ltn
                                       const LocalParameters<dim> &parameters,
                                       const double                h,
                                       const MPI_Comm              communicator)
-    : parameters(parameters)
-    , communicator(communicator)
-    , mesh(geometry, h, parameters.graded_mesh_layers, communicator)
-    , fe(parameters.degree)
-    , dof_handler(mesh.get_triangulation())
-  {
-    setup_local_dofs(dof_handler, fe, communicator, hanging_nodes, model);
-  }
-
-
-
-  template <int dim>
-  void
-  PoissonProblem<dim>::refine(
-    const TrilinosWrappers::MPI::Vector                   &solution,
-    const std::function<bool(const Point<dim> &, double)> &may_refine)
-  {
-    mesh.refine(dof_handler,
-                model.ghosted(solution),
-                parameters.refinement_fraction,
-                may_refine);
-    setup_local_dofs(dof_handler, fe, communicator, hanging_nodes, model);
-  }
+    : Base(geometry, parameters, h, communicator, parameters.degree)
+  {}
 
 
 
@@ -122,24 +101,6 @@ namespace ltn
                                                dirichlet_values);
     close_local_model(
       dof_handler, hanging_nodes, dirichlet_values, control_boundary_id, model);
-  }
-
-
-
-  template <int dim>
-  const DoFHandler<dim> &
-  PoissonProblem<dim>::get_dof_handler() const
-  {
-    return dof_handler;
-  }
-
-
-
-  template <int dim>
-  const DiscreteModel &
-  PoissonProblem<dim>::get_model() const
-  {
-    return model;
   }
 
 

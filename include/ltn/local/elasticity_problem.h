@@ -11,8 +11,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
-#include <ltn/local/local_mesh.h>
-#include <ltn/local/local_parameters.h>
+#include <ltn/local/local_problem.h>
 #include <ltn/scene/geometry.h>
 
 #include <functional>
@@ -38,13 +37,9 @@ namespace ltn
    * closed as close_local_model() describes.
    */
   template <int dim>
-  class ElasticityProblem
+  class ElasticityProblem : public LocalProblem<dim, FESystem<dim>>
   {
   public:
-    /** The boundary id of `Gamma_c`; the body's faces keep ids 0..2dim-1. */
-    static constexpr types::boundary_id control_boundary_id =
-      LocalMesh<dim>::control_boundary_id;
-
     /**
      * Mesh `Omega_l` of @p geometry with size @p h over @p communicator,
      * with Lamé parameters @p lambda and @p mu.
@@ -69,23 +64,6 @@ namespace ltn
              const Function<dim> &boundary_data,
              const Function<dim> &traction,
              const Function<dim> &pressure);
-
-    /**
-     * Refine the cells with the largest Kelly error indicators of
-     * @p solution (all components; a `refinement fraction` of them, over
-     * all ranks), except those for which @p may_refine (given the cell's
-     * centre and size) says no, and set up the degrees of freedom anew;
-     * assemble() must follow.
-     */
-    void
-    refine(const TrilinosWrappers::MPI::Vector                   &solution,
-           const std::function<bool(const Point<dim> &, double)> &may_refine);
-
-    const DoFHandler<dim> &
-    get_dof_handler() const;
-
-    const DiscreteModel &
-    get_model() const;
 
     /** The first Lamé parameter. */
     double
@@ -120,15 +98,17 @@ namespace ltn
                   const unsigned int   face) const;
 
   private:
-    const LocalParameters<dim> &parameters;
-    const double                lambda_value;
-    const double                mu_value;
-    const double                tolerance;
-    const MPI_Comm              communicator;
-    LocalMesh<dim>              mesh;
-    FESystem<dim>               fe;
-    DoFHandler<dim>             dof_handler;
-    AffineConstraints<double>   hanging_nodes;
-    DiscreteModel               model;
+    using Base = LocalProblem<dim, FESystem<dim>>;
+    using Base::communicator;
+    using Base::control_boundary_id;
+    using Base::dof_handler;
+    using Base::fe;
+    using Base::hanging_nodes;
+    using Base::model;
+    using Base::parameters;
+
+    const double lambda_value;
+    const double mu_value;
+    const double tolerance;
   };
 } // namespace ltn

@@ -10,8 +10,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
-#include <ltn/local/local_mesh.h>
-#include <ltn/local/local_parameters.h>
+#include <ltn/local/local_problem.h>
 #include <ltn/scene/geometry.h>
 
 #include <functional>
@@ -22,7 +21,7 @@ namespace ltn
 
   /**
    * The local model: Poisson's equation `-Laplace u = f` on the local region
-   * `Omega_l`, discretized by continuous `FE_Q(p)` on a uniform mesh.
+   * `Omega_l`, discretized by continuous `FE_Q(p)` on a LocalMesh.
    * Faces of `Omega_l` on the body's boundary carry physical data: Dirichlet
    * `u = g` on the faces listed in `Dirichlet boundaries`, Neumann
    * `du/dn = q . n` (a given flux vector `q`) on the others. The boundary
@@ -34,13 +33,9 @@ namespace ltn
    * (see close_local_model()).
    */
   template <int dim>
-  class PoissonProblem
+  class PoissonProblem : public LocalProblem<dim, FE_Q<dim>>
   {
   public:
-    /** The boundary id of `Gamma_c`; the body's faces keep ids 0..2dim-1. */
-    static constexpr types::boundary_id control_boundary_id =
-      LocalMesh<dim>::control_boundary_id;
-
     PoissonProblem(const Geometry<dim>        &geometry,
                    const LocalParameters<dim> &parameters,
                    const double                h,
@@ -57,29 +52,13 @@ namespace ltn
              const Function<dim> &boundary_data,
              const Function<dim> &boundary_gradient);
 
-    /**
-     * Refine the cells with the largest Kelly error indicators of
-     * @p solution (a `refinement fraction` of them, over all ranks), except
-     * those for which @p may_refine (given the cell's centre and size) says
-     * no, and set up the degrees of freedom anew; assemble() must follow.
-     */
-    void
-    refine(const TrilinosWrappers::MPI::Vector                   &solution,
-           const std::function<bool(const Point<dim> &, double)> &may_refine);
-
-    const DoFHandler<dim> &
-    get_dof_handler() const;
-
-    const DiscreteModel &
-    get_model() const;
-
   private:
-    const LocalParameters<dim> &parameters;
-    const MPI_Comm              communicator;
-    LocalMesh<dim>              mesh;
-    FE_Q<dim>                   fe;
-    DoFHandler<dim>             dof_handler;
-    AffineConstraints<double>   hanging_nodes;
-    DiscreteModel               model;
+    using Base = LocalProblem<dim, FE_Q<dim>>;
+    using Base::control_boundary_id;
+    using Base::dof_handler;
+    using Base::fe;
+    using Base::hanging_nodes;
+    using Base::model;
+    using Base::parameters;
   };
 } // namespace ltn

@@ -1,0 +1,44 @@
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+
+#include <ltn/local/local_problem.h>
+
+namespace ltn
+{
+  template <int dim, typename FE>
+  void
+  LocalProblem<dim, FE>::refine(
+    const TrilinosWrappers::MPI::Vector                   &solution,
+    const std::function<bool(const Point<dim> &, double)> &may_refine)
+  {
+    mesh.refine(dof_handler,
+                model.ghosted(solution),
+                parameters.refinement_fraction,
+                may_refine);
+    setup_local_dofs(dof_handler, fe, communicator, hanging_nodes, model);
+  }
+
+
+
+  template <int dim, typename FE>
+  const DoFHandler<dim> &
+  LocalProblem<dim, FE>::get_dof_handler() const
+  {
+    return dof_handler;
+  }
+
+
+
+  template <int dim, typename FE>
+  const DiscreteModel &
+  LocalProblem<dim, FE>::get_model() const
+  {
+    return model;
+  }
+
+  template class LocalProblem<1, FE_Q<1>>;
+  template class LocalProblem<2, FE_Q<2>>;
+  template class LocalProblem<3, FE_Q<3>>;
+  template class LocalProblem<2, FESystem<2>>;
+  template class LocalProblem<3, FESystem<3>>;
+} // namespace ltn
