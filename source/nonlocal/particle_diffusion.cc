@@ -13,35 +13,14 @@ namespace ltn
                                             const Kernel        &kernel,
                                             const double         spacing,
                                             const MPI_Comm       communicator)
-    : geometry(geometry)
-    , kernel(kernel)
-    , spacing(spacing)
-    , stencil(kernel, spacing)
-    , lattice(geometry.nonlocal_region, spacing, stencil.offsets())
-  {
-    model.communicator = communicator;
-    model.owned        = even_partition(lattice.n_particles(), communicator);
-    model.controls     = IndexSet(lattice.n_particles());
-    model.fixed        = IndexSet(lattice.n_particles());
-    for (const auto i : model.owned)
-      {
-        const DofRole r = role(lattice.index(i));
-        if (r == DofRole::control)
-          model.controls.add_index(i);
-        else if (r == DofRole::fixed)
-          model.fixed.add_index(i);
-      }
-    model.controls.compress();
-    model.fixed.compress();
-    model.locate_controls<dim>(
-      [&](const types::global_dof_index i) {
-        return lattice.position(lattice.index(i));
-      },
-      [](const types::global_dof_index) { return 0u; });
-    model.locate_nodes<dim>(model.owned, [&](const types::global_dof_index n) {
-      return lattice.position(lattice.index(n));
-    });
-  }
+    : Base(
+        geometry,
+        kernel,
+        spacing,
+        kernel.horizon(),
+        [](const LatticeStencil<dim> &stencil) { return stencil.offsets(); },
+        communicator)
+  {}
 
 
 
@@ -120,102 +99,7 @@ namespace ltn
     // (doc/discretization.md, section 11).
     model.symmetric_free_block = true;
 
-    model.rhs = model.new_vector();
-    for (const auto i : model.owned)
-      {
-        const Point<dim> x = lattice.position(lattice.index(i));
-        switch (model.role(i))
-          {
-            case DofRole::free:
-              model.rhs(i) = rhs.value(x);
-              break;
-            case DofRole::fixed:
-              model.rhs(i) = volume_data.value(x);
-              break;
-            case DofRole::control:
-              break;
-          }
-      }
-    model.rhs.compress(VectorOperation::insert);
-  }
-
-
-
-  template <int dim>
-  const DiscreteModel &
-  ParticleDiffusion<dim>::get_model() const
-  {
-    return model;
-  }
-
-
-
-  template <int dim>
-  const ParticleLattice<dim> &
-  ParticleDiffusion<dim>::get_lattice() const
-  {
-    return lattice;
-  }
-
-
-
-  template <int dim>
-  DofRole
-  ParticleDiffusion<dim>::role(const LatticeIndex &index) const
-  {
-    return lattice.role(index, geometry);
-  }
-
-
-
-  template <int dim>
-  double
-  ParticleDiffusion<dim>::particle_volume() const
-  {
-    return std::pow(spacing, dim);
-  }
-
-
-
-  template <int dim>
-  std::vector<Point<dim>>
-  ParticleDiffusion<dim>::owned_positions() const
-  {
-    std::vector<Point<dim>> result;
-    for (const auto i : model.owned)
-      result.push_back(lattice.position(lattice.index(i)));
-    return result;
-  }
-
-
-
-  template <int dim>
-  std::vector<Region>
-  ParticleDiffusion<dim>::owned_regions() const
-  {
-    std::vector<Region> result;
-    for (const auto &x : owned_positions())
-      result.push_back(geometry.nonlocal_region_of(x, kernel.horizon()));
-    return result;
-  }
-
-
-
-  template <int dim>
-  ErrorNorms
-  ParticleDiffusion<dim>::errors(const TrilinosWrappers::MPI::Vector &field,
-                                 const Function<dim> &exact) const
-  {
-    ErrorNorms errors;
-    for (const auto i : model.owned)
-      if (model.role(i) == DofRole::free)
-        {
-          const double e =
-            field(i) - exact.value(lattice.position(lattice.index(i)));
-          errors.l2_squared += particle_volume() * e * e;
-          errors.add_pointwise(e);
-        }
-    return errors.over_all_ranks(model.communicator);
+    this->assemble_load(rhs, volume_data);
   }
 
 

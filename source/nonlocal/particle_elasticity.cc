@@ -20,14 +20,19 @@ namespace ltn
     const double                   mu,
     const std::vector<Crack<dim>> &cracks,
     const MPI_Comm                 communicator)
-    : geometry(geometry)
-    , spacing(spacing)
+    : Base(
+        geometry,
+        influence,
+        spacing,
+        2 * influence.horizon(),
+        [](const PeridynamicStencil<dim> &stencil) {
+          return stencil.two_bond_reach();
+        },
+        communicator)
     , eps(influence.horizon())
     , coefficient_A(dim * (lambda - mu))
     , coefficient_B(dim * (dim + 2) * mu)
     , cracks(cracks)
-    , stencil(influence, spacing)
-    , lattice(geometry.nonlocal_region, spacing, stencil.two_bond_reach())
   {
     for (const auto &crack : cracks)
       {
@@ -58,53 +63,11 @@ namespace ltn
           }
       }
 
-    owned_particles = even_partition(lattice.n_particles(), communicator);
-    const types::global_dof_index n_dofs = n_components * lattice.n_particles();
-    model.communicator                   = communicator;
-    model.owned                          = IndexSet(n_dofs);
-    if (owned_particles.n_elements() > 0)
-      model.owned.add_range(dof(*owned_particles.begin(), 0),
-                            dof(owned_particles.nth_index_in_set(
-                                  owned_particles.n_elements() - 1),
-                                n_components));
-    model.controls = IndexSet(n_dofs);
-    model.fixed    = IndexSet(n_dofs);
+    // The dilatation is an unknown only where its sum is complete.
     for (const auto n : owned_particles)
-      {
-        const LatticeIndex index = lattice.index(n);
-        const DofRole      r     = role(index);
-        for (unsigned int c = 0; c < dim; ++c)
-          if (r == DofRole::control)
-            model.controls.add_index(dof(n, c));
-          else if (r == DofRole::fixed)
-            model.fixed.add_index(dof(n, c));
-        // The dilatation is an unknown only where its sum is complete.
-        if (!complete(index))
-          model.fixed.add_index(dof(n, dim));
-      }
-    model.controls.compress();
+      if (!complete(lattice.index(n)))
+        model.fixed.add_index(dof(n, dim));
     model.fixed.compress();
-    model.locate_controls<dim>(
-      [&](const types::global_dof_index i) {
-        return lattice.position(lattice.index(i / n_components));
-      },
-      [](const types::global_dof_index i) {
-        return static_cast<unsigned int>(i % n_components);
-      });
-    model.locate_nodes<dim>(owned_particles,
-                            [&](const types::global_dof_index n) {
-                              return lattice.position(lattice.index(n));
-                            });
-  }
-
-
-
-  template <int dim>
-  types::global_dof_index
-  ParticleElasticity<dim>::dof(const types::global_dof_index number,
-                               const unsigned int            c)
-  {
-    return n_components * number + c;
   }
 
 
@@ -403,60 +366,7 @@ namespace ltn
     // block is its Hessian.
     model.symmetric_free_block = true;
 
-    model.rhs = model.new_vector();
-    for (const auto n : owned_particles)
-      {
-        const Point<dim> x = lattice.position(lattice.index(n));
-        for (unsigned int c = 0; c < dim; ++c)
-          switch (model.role(dof(n, c)))
-            {
-              case DofRole::free:
-                model.rhs(dof(n, c)) = body_force.value(x, c);
-                break;
-              case DofRole::fixed:
-                model.rhs(dof(n, c)) = volume_data.value(x, c);
-                break;
-              case DofRole::control:
-                break;
-            }
-      }
-    model.rhs.compress(VectorOperation::insert);
-  }
-
-
-
-  template <int dim>
-  const DiscreteModel &
-  ParticleElasticity<dim>::get_model() const
-  {
-    return model;
-  }
-
-
-
-  template <int dim>
-  const ParticleLattice<dim> &
-  ParticleElasticity<dim>::get_lattice() const
-  {
-    return lattice;
-  }
-
-
-
-  template <int dim>
-  DofRole
-  ParticleElasticity<dim>::role(const LatticeIndex &index) const
-  {
-    return lattice.role(index, geometry);
-  }
-
-
-
-  template <int dim>
-  double
-  ParticleElasticity<dim>::particle_volume() const
-  {
-    return std::pow(spacing, dim);
+    this->assemble_load(body_force, volume_data);
   }
 
 
@@ -466,30 +376,6 @@ namespace ltn
   ParticleElasticity<dim>::horizon() const
   {
     return eps;
-  }
-
-
-
-  template <int dim>
-  std::vector<Point<dim>>
-  ParticleElasticity<dim>::owned_positions() const
-  {
-    std::vector<Point<dim>> result;
-    for (const auto n : owned_particles)
-      result.push_back(lattice.position(lattice.index(n)));
-    return result;
-  }
-
-
-
-  template <int dim>
-  std::vector<Region>
-  ParticleElasticity<dim>::owned_regions() const
-  {
-    std::vector<Region> result;
-    for (const auto &x : owned_positions())
-      result.push_back(geometry.nonlocal_region_of(x, 2 * eps));
-    return result;
   }
 
 
@@ -525,28 +411,6 @@ namespace ltn
   }
 
 
-
-  template <int dim>
-  ErrorNorms
-  ParticleElasticity<dim>::errors(const TrilinosWrappers::MPI::Vector &field,
-                                  const Function<dim> &exact) const
-  {
-    ErrorNorms errors;
-    for (const auto n : owned_particles)
-      {
-        const LatticeIndex index = lattice.index(n);
-        if (!lattice.inside(index))
-          continue;
-        const Point<dim> x = lattice.position(index);
-        for (unsigned int c = 0; c < dim; ++c)
-          {
-            const double e = field(dof(n, c)) - exact.value(x, c);
-            errors.l2_squared += particle_volume() * e * e;
-            errors.add_pointwise(e);
-          }
-      }
-    return errors.over_all_ranks(model.communicator);
-  }
 
   template <int dim>
   typename ParticleElasticity<dim>::CrackOpening

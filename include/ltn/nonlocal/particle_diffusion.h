@@ -10,6 +10,7 @@
 #include <ltn/nonlocal/lattice_rows.h>
 #include <ltn/nonlocal/lattice_stencil.h>
 #include <ltn/nonlocal/particle_lattice.h>
+#include <ltn/nonlocal/particle_model.h>
 #include <ltn/scene/geometry.h>
 
 #include <string>
@@ -37,10 +38,11 @@ namespace ltn
    * full horizon.
    */
   template <int dim>
-  class ParticleDiffusion
+  class ParticleDiffusion : public ParticleModel<dim, LatticeStencil<dim>, 1, 1>
   {
   public:
-    using LatticeIndex = typename ParticleLattice<dim>::LatticeIndex;
+    using Base = ParticleModel<dim, LatticeStencil<dim>, 1, 1>;
+    using typename Base::LatticeIndex;
 
     ParticleDiffusion(const Geometry<dim> &geometry,
                       const Kernel        &kernel,
@@ -61,52 +63,11 @@ namespace ltn
     void
     particle_rows(const types::global_dof_index i, ParticleRows &rows) const;
 
-    const DiscreteModel &
-    get_model() const;
-
-    const ParticleLattice<dim> &
-    get_lattice() const;
-
-    /** The field has one component: the particle's value. */
-    static constexpr unsigned int n_field_components = 1;
-
-    /** The degree of freedom of particle @p number (component 0). */
-    static types::global_dof_index
-    dof(const types::global_dof_index number, const unsigned int /*c*/)
-    {
-      return number;
-    }
-
-    /** The role of the particle at @p index. */
-    DofRole
-    role(const LatticeIndex &index) const;
-
-    /** The volume `h^dim` of every particle. */
-    double
-    particle_volume() const;
-
-    /** The positions of this rank's particles, in their order. */
-    std::vector<Point<dim>>
-    owned_positions() const;
-
-    /** The region tags of this rank's particles. */
-    std::vector<Region>
-    owned_regions() const;
-
-    /**
-     * Errors of @p field against @p exact over the particles of `Omega_n`
-     * on all ranks: `l2^2 = sum_i h^dim e_i^2`, `linf = max_i |e_i|`.
-     */
-    ErrorNorms
-    errors(const TrilinosWrappers::MPI::Vector &field,
-           const Function<dim>                 &exact) const;
 
   private:
-    const Geometry<dim>       &geometry;
-    const Kernel               kernel;
-    const double               spacing;
-    const LatticeStencil<dim>  stencil;
-    const ParticleLattice<dim> lattice;
-    DiscreteModel              model;
+    using Base::lattice;
+    using Base::model;
+    using Base::spacing;
+    using Base::stencil;
   };
 } // namespace ltn

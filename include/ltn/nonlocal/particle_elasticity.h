@@ -9,6 +9,7 @@
 #include <ltn/nonlocal/lattice_operator.h>
 #include <ltn/nonlocal/lattice_rows.h>
 #include <ltn/nonlocal/particle_lattice.h>
+#include <ltn/nonlocal/particle_model.h>
 #include <ltn/nonlocal/peridynamic_stencil.h>
 #include <ltn/scene/crack.h>
 #include <ltn/scene/geometry.h>
@@ -51,12 +52,14 @@ namespace ltn
    */
   template <int dim>
   class ParticleElasticity
+    : public ParticleModel<dim, PeridynamicStencil<dim>, dim + 1, dim>
   {
   public:
-    using LatticeIndex = typename ParticleLattice<dim>::LatticeIndex;
-
     /** Degrees of freedom per particle: the displacement and `theta`. */
-    static constexpr unsigned int n_components = dim + 1;
+    using Base = ParticleModel<dim, PeridynamicStencil<dim>, dim + 1, dim>;
+    using Base::dof;
+    using Base::n_components;
+    using typename Base::LatticeIndex;
 
     ParticleElasticity(const Geometry<dim>           &geometry,
                        const Kernel                  &influence,
@@ -103,27 +106,7 @@ namespace ltn
     ScaledBondRows<dim>
     scaled_bond_rows() const;
 
-    const DiscreteModel &
-    get_model() const;
-
-    const ParticleLattice<dim> &
-    get_lattice() const;
-
-    /** The degree of freedom of component @p c of particle @p number. */
-    static types::global_dof_index
-    dof(const types::global_dof_index number, const unsigned int c);
-
-    /** The field components the coupling compares: the displacement. */
-    static constexpr unsigned int n_field_components = dim;
-
-    /** The role of the displacement of the particle at @p index. */
-    DofRole
-    role(const LatticeIndex &index) const;
-
-    /** The volume `h^dim` of every particle. */
-    double
-    particle_volume() const;
-
+    /** The horizon `eps`. */
     double
     horizon() const;
 
@@ -134,14 +117,6 @@ namespace ltn
      */
     double
     intact_bonds(const LatticeIndex &index, std::vector<bool> &intact) const;
-
-    /** The positions of this rank's particles, in their order. */
-    std::vector<Point<dim>>
-    owned_positions() const;
-
-    /** The region tags of this rank's particles. */
-    std::vector<Region>
-    owned_regions() const;
 
     /** Per particle of this rank: the fraction of its bonds cracks cut. */
     std::vector<double>
@@ -166,16 +141,15 @@ namespace ltn
     crack_opening(const TrilinosWrappers::MPI::Vector &field,
                   const unsigned int                   k) const;
 
-    /**
-     * Errors of the displacement in @p field against @p exact (`dim`
-     * components) over the particles of `Omega_n` on all ranks:
-     * `l2^2 = sum_i h^dim |e_i|^2`, `linf = max_{i,c} |e_ic|`.
-     */
-    ErrorNorms
-    errors(const TrilinosWrappers::MPI::Vector &field,
-           const Function<dim>                 &exact) const;
 
   private:
+    using Base::geometry;
+    using Base::lattice;
+    using Base::model;
+    using Base::owned_particles;
+    using Base::spacing;
+    using Base::stencil;
+
     /** Does the particle at @p index have all its bonds' neighbours? */
     bool
     complete(const LatticeIndex &index) const;
@@ -188,19 +162,13 @@ namespace ltn
     bool
     is_cut(const Point<dim> &x, const Point<dim> &y) const;
 
-    const Geometry<dim>          &geometry;
-    const double                  spacing;
     const double                  eps;
     const double                  coefficient_A;
     const double                  coefficient_B;
     const std::vector<Crack<dim>> cracks;
-    const PeridynamicStencil<dim> stencil;
-    const ParticleLattice<dim>    lattice;
     /** The cracks' boxes widened by the horizon: where bonds can be cut. */
     std::vector<Box<dim>> crack_neighbourhoods;
     /** Per particle of the lattice: is one of its bonds cut? */
     std::vector<bool> has_cut_bond;
-    IndexSet          owned_particles;
-    DiscreteModel     model;
   };
 } // namespace ltn
