@@ -126,6 +126,30 @@ namespace ltn
       return planes;
     }
 
+    /**
+     * `Postprocess/Reference crack opening` @p text with the constants of
+     * @p material and of a level of horizon @p eps and mesh size @p h.
+     */
+    template <int dim>
+    std::unique_ptr<Expression<dim>>
+    reference_opening(const std::string &text,
+                      const Material    &material,
+                      const double       eps,
+                      const double       h)
+    {
+      return std::make_unique<Expression<dim>>(
+        "Postprocess/Reference crack opening",
+        text,
+        std::map<std::string, double>{{"E", material.youngs_modulus},
+                                      {"nu", material.poisson_ratio},
+                                      {"lambda", material.lambda(dim)},
+                                      {"mu", material.mu()},
+                                      {"Eprime", material.crack_modulus(dim)},
+                                      {"pi", numbers::PI},
+                                      {"eps", eps},
+                                      {"h", h}});
+    }
+
     JsonValue
     tensor_to_json(const double *values, const unsigned int n)
     {
@@ -311,18 +335,8 @@ namespace ltn
           JsonValue                        openings = JsonValue::array();
           std::unique_ptr<Expression<dim>> reference;
           if (!reference_crack_opening.empty())
-            reference = std::make_unique<Expression<dim>>(
-              "Postprocess/Reference crack opening",
-              reference_crack_opening,
-              std::map<std::string, double>{{"E", material.youngs_modulus},
-                                            {"nu", material.poisson_ratio},
-                                            {"lambda", material.lambda(dim)},
-                                            {"mu", material.mu()},
-                                            {"Eprime",
-                                             material.crack_modulus(dim)},
-                                            {"pi", numbers::PI},
-                                            {"eps", eps},
-                                            {"h", h}});
+            reference =
+              reference_opening<dim>(reference_crack_opening, material, eps, h);
           for (unsigned int k = 0; k < crack_set.cracks.size(); ++k)
             {
               const auto opening =
@@ -490,16 +504,8 @@ namespace ltn
       }
     crack_set.validate(geometry, spacings);
     if (!reference_crack_opening.empty())
-      Expression<dim>("Postprocess/Reference crack opening",
-                      reference_crack_opening,
-                      {{"E", material.youngs_modulus},
-                       {"nu", material.poisson_ratio},
-                       {"lambda", material.lambda(dim)},
-                       {"mu", material.mu()},
-                       {"Eprime", material.crack_modulus(dim)},
-                       {"pi", numbers::PI},
-                       {"eps", eps0},
-                       {"h", h0}});
+      // Parsed once here, to stop on a malformed one before the run.
+      reference_opening<dim>(reference_crack_opening, material, eps0, h0);
   }
 
 
