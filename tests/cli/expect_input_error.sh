@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# Run ltn on bad input and check what a user must get: exit status 2, an
-# error on stderr that contains EXPECTED (the parameter's name), and no
-# output directory.
+# Run ltn on bad input and check what a user must get: exit status 2, one
+# line on stderr, the error, that contains EXPECTED (the parameter's name),
+# and no output directory.
 #
 # usage: expect_input_error.sh LTN OUTPUT_DIR EXPECTED -- ARGS...
 set -u
@@ -15,6 +15,8 @@ echo "stderr: $stderr"
 [ "$status" -eq 2 ] || { echo "FAIL: expected exit status 2"; exit 1; }
 grep -qF -- "$expected" <<<"$stderr" ||
   { echo "FAIL: the error does not mention: $expected"; exit 1; }
+[ "$(wc -l <<<"$stderr")" -eq 1 ] && [[ $stderr == "ltn: error: "* ]] ||
+  { echo "FAIL: stderr is not the error's line alone"; exit 1; }
 [ ! -e "$output_dir" ] ||
   { echo "FAIL: output was written to $output_dir"; exit 1; }
 echo PASS
