@@ -1,10 +1,12 @@
 #include <ltn/app/diffusion_scene.h>
+#include <ltn/app/scene.templates.h>
 #include <ltn/base/input_error.h>
 #include <ltn/local/poisson_problem.h>
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
 #include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/scene/elasticity_data.h>
 
+#include <functional>
 #include <memory>
 #include <type_traits>
 
@@ -17,7 +19,11 @@ namespace ltn
     using NonlocalDiffusion =
       std::conditional_t<dim == 1, NonlocalWeakForm1D, ParticleDiffusion<dim>>;
 
-    /** A level of a diffusion scene, for Scene::run_level(). */
+    /**
+     * A level of a diffusion scene, for Scene::run_level(). Neither copied
+     * nor moved (its parsed functions are const): it is made where it is
+     * returned, `return DiffusionLevel{...}`.
+     */
     template <int dim>
     struct DiffusionLevel
     {
@@ -151,10 +157,10 @@ namespace ltn
   template <int dim>
   DiffusionScene<dim>::DiffusionScene(ParameterHandler  &prm,
                                       const std::string &scene_name)
-    : Scene<dim>(prm, scene_name)
+    : Scene<dim>(scene_name)
   {
     Assert(prm.get_integer("Dimension") == dim, ExcInternalError());
-    problem_data.parse_parameters(prm);
+    this->parse_parameters(prm, [&] { problem_data.parse_parameters(prm); });
     check_input(dim > 1 || !nonlocal_parameters.matrix_free,
                 "Nonlocal model/Operator",
                 "matrix-free",

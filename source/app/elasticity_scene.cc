@@ -1,4 +1,5 @@
 #include <ltn/app/elasticity_scene.h>
+#include <ltn/app/scene.templates.h>
 #include <ltn/base/discrete_model.h>
 #include <ltn/base/input_error.h>
 #include <ltn/local/elasticity_problem.h>
@@ -6,8 +7,8 @@
 #include <ltn/output/elasticity_output.h>
 
 #include <cmath>
+#include <functional>
 #include <iomanip>
-#include <limits>
 #include <memory>
 #include <sstream>
 
@@ -159,7 +160,11 @@ namespace ltn
       return array;
     }
 
-    /** A level of an elasticity scene, for Scene::run_level(). */
+    /**
+     * A level of an elasticity scene, for Scene::run_level(). Neither
+     * copied nor moved (its parsed functions are const): it is made where
+     * it is returned, `return ElasticityLevel{...}`.
+     */
     template <int dim>
     struct ElasticityLevel
     {
@@ -425,11 +430,13 @@ namespace ltn
   template <int dim>
   ElasticityScene<dim>::ElasticityScene(ParameterHandler  &prm,
                                         const std::string &scene_name)
-    : Scene<dim>(prm, scene_name)
+    : Scene<dim>(scene_name)
   {
-    material.parse_parameters(prm);
-    crack_set.parse_parameters(prm);
-    data.parse_parameters(prm);
+    this->parse_parameters(prm, [&] {
+      material.parse_parameters(prm);
+      crack_set.parse_parameters(prm);
+      data.parse_parameters(prm);
+    });
     coupling_parameters.check_operator(nonlocal_parameters.matrix_free,
                                        geometry.has_local_model() &&
                                          geometry.has_nonlocal_model());

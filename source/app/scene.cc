@@ -25,12 +25,21 @@ namespace ltn
 
 
   template <int dim>
-  Scene<dim>::Scene(ParameterHandler &prm, const std::string &scene_name)
+  Scene<dim>::Scene(const std::string &scene_name)
     : scene_name(scene_name)
+  {}
+
+
+
+  template <int dim>
+  void
+  Scene<dim>::parse_parameters(ParameterHandler            &prm,
+                               const std::function<void()> &parse_physics)
   {
     geometry.parse_parameters(prm);
     nonlocal_parameters.parse_parameters(prm);
     local_parameters.parse_parameters(prm);
+    parse_physics();
     discretization.parse_parameters(prm);
     coupling_parameters.parse_parameters(prm);
     prm.enter_subsection("Output");

@@ -1,10 +1,7 @@
-#include <ltn/base/partition.h>
 #include <ltn/nonlocal/collar_trace.h>
 #include <ltn/nonlocal/lattice_operator.h>
 #include <ltn/nonlocal/lattice_surrogate.h>
 #include <ltn/nonlocal/particle_diffusion.h>
-
-#include <cmath>
 
 namespace ltn
 {

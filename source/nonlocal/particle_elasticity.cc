@@ -1,4 +1,3 @@
-#include <ltn/base/partition.h>
 #include <ltn/nonlocal/collar_trace.h>
 #include <ltn/nonlocal/lattice_operator.h>
 #include <ltn/nonlocal/lattice_surrogate.h>

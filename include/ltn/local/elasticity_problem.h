@@ -3,18 +3,12 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/tensor.h>
 
-#include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_system.h>
 
-#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <ltn/base/discrete_model.h>
 #include <ltn/local/local_problem.h>
 #include <ltn/scene/geometry.h>
-
-#include <functional>
 
 namespace ltn
 {

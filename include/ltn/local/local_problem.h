@@ -51,6 +51,9 @@ namespace ltn
     get_model() const;
 
   protected:
+    /** Not deleted through this base. */
+    ~LocalProblem() = default;
+
     /**
      * Mesh `Omega_l` of @p geometry with size @p h over @p communicator and
      * distribute the degrees of freedom of the element built from

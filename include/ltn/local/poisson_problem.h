@@ -2,18 +2,10 @@
 
 #include <deal.II/base/function.h>
 
-#include <deal.II/dofs/dof_handler.h>
-
 #include <deal.II/fe/fe_q.h>
 
-#include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/trilinos_vector.h>
-
-#include <ltn/base/discrete_model.h>
 #include <ltn/local/local_problem.h>
 #include <ltn/scene/geometry.h>
-
-#include <functional>
 
 namespace ltn
 {
@@ -21,7 +13,7 @@ namespace ltn
 
   /**
    * The local model: Poisson's equation `-Laplace u = f` on the local region
-   * `Omega_l`, discretized by continuous `FE_Q(p)` on a LocalMesh.
+   * `Omega_l`, discretized by continuous `FE_Q(p)`.
    * Faces of `Omega_l` on the body's boundary carry physical data: Dirichlet
    * `u = g` on the faces listed in `Dirichlet boundaries`, Neumann
    * `du/dn = q . n` (a given flux vector `q`) on the others. The boundary

@@ -4,8 +4,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
-#include <ltn/base/discrete_model.h>
-#include <ltn/base/field_errors.h>
 #include <ltn/nonlocal/kernel.h>
 #include <ltn/nonlocal/lattice_rows.h>
 #include <ltn/nonlocal/lattice_stencil.h>
@@ -13,7 +11,6 @@
 #include <ltn/nonlocal/particle_model.h>
 #include <ltn/scene/geometry.h>
 
-#include <string>
 #include <vector>
 
 namespace ltn
@@ -62,7 +59,6 @@ namespace ltn
     /** The row of particle @p i of the closed model. */
     void
     particle_rows(const types::global_dof_index i, ParticleRows &rows) const;
-
 
   private:
     using Base::lattice;

@@ -55,7 +55,10 @@ namespace ltn
     : public ParticleModel<dim, PeridynamicStencil<dim>, dim + 1, dim>
   {
   public:
-    /** Degrees of freedom per particle: the displacement and `theta`. */
+    /**
+     * Per particle the displacement and `theta`, `dim + 1` degrees of
+     * freedom; the field the coupling compares is the displacement.
+     */
     using Base = ParticleModel<dim, PeridynamicStencil<dim>, dim + 1, dim>;
     using Base::dof;
     using Base::n_components;
@@ -140,7 +143,6 @@ namespace ltn
     CrackOpening
     crack_opening(const TrilinosWrappers::MPI::Vector &field,
                   const unsigned int                   k) const;
-
 
   private:
     using Base::geometry;

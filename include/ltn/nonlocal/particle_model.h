@@ -84,6 +84,9 @@ namespace ltn
            const Function<dim>                 &exact) const;
 
   protected:
+    /** Not deleted through this base. */
+    ~ParticleModel() = default;
+
     /**
      * The particles of @p geometry's `Omega_n` at @p spacing with the
      * stencil `Stencil(kernel, spacing)`, out to the offsets

@@ -1,0 +1,218 @@
+#pragma once
+
+// The definitions of Scene's member templates, for the scenes' own source
+// files: the level loop needs the output and overlap functions, which
+// the scenes' users (main, the tests) do not.
+
+#include <deal.II/base/timer.h>
+
+#include <ltn/app/level_solve.h>
+#include <ltn/app/scene.h>
+#include <ltn/base/field_errors.h>
+#include <ltn/coupling/overlap_quadrature.h>
+#include <ltn/output/field_output.h>
+#include <ltn/output/nonlocal_output.h>
+
+#include <iomanip>
+#include <memory>
+
+namespace ltn
+{
+  template <int dim>
+  template <typename PhysicsOfLevel>
+  RunSummary
+  Scene<dim>::run_levels(const std::string    &model,
+                         const std::string    &output_directory,
+                         ConditionalOStream   &out,
+                         const PhysicsOfLevel &physics_of_level)
+  {
+    Timer total_timer;
+    solutions.clear();
+    RunSummary summary;
+    summary.scene = scene_name;
+    summary.dim   = dim;
+    summary.model = model;
+    WrittenFiles files;
+    for (unsigned int level = 0; level < discretization.n_levels; ++level)
+      run_level(physics_of_level(discretization.mesh_size(level)),
+                level,
+                output_directory,
+                summary,
+                files,
+                out);
+    summary.total_time = total_timer.wall_time();
+    return summary;
+  }
+
+
+
+  template <int dim>
+  template <typename Physics>
+  void
+  Scene<dim>::run_level(const Physics      &physics,
+                        const unsigned int  level,
+                        const std::string  &output_directory,
+                        RunSummary         &summary,
+                        WrittenFiles       &files,
+                        ConditionalOStream &out)
+  {
+    const double h = physics.h, eps = physics.eps;
+    // The models of the scene: both, or one on the whole body. The local
+    // mesh may be refined adaptively within a level.
+    std::unique_ptr<typename Physics::Nonlocal> nonlocal;
+    std::unique_ptr<typename Physics::Local>    local;
+    CouplingSolution                            solution;
+    const unsigned int                          cycles =
+      geometry.has_local_model() ? local_parameters.adaptive_cycles : 0;
+    for (unsigned int cycle = 0; cycle <= cycles; ++cycle)
+      {
+        ConditionalOStream silent(out.get_stream(), false);
+        TimerOutput timer(silent, TimerOutput::never, TimerOutput::wall_times);
+        LevelRecord record;
+        record.h       = h;
+        record.horizon = eps;
+        record.cycle   = cycle;
+
+        timer.enter_subsection("setup meshes");
+        if (cycle == 0)
+          {
+            if (geometry.has_nonlocal_model())
+              nonlocal = physics.make_nonlocal();
+            if (geometry.has_local_model())
+              local = physics.make_local();
+          }
+        else
+          {
+            // In 2D/3D the particles of the overlap, out to the collar's
+            // depth, observe the local field: its cells there keep at least
+            // p particle spacings (see NonlocalParameters::
+            // validate_particles()).
+            const double spacing = nonlocal_parameters.particle_spacing(h);
+            local->refine(solution.fields[local_model],
+                          [&](const Point<dim> &center, const double size) {
+                            return dim == 1 || !nonlocal ||
+                                   !geometry.in_overlap(center,
+                                                        physics.collar_depth +
+                                                          size) ||
+                                   size / 2 >= local_parameters.degree *
+                                                 spacing * (1 - 1e-12);
+                          });
+          }
+        timer.leave_subsection();
+
+        if (nonlocal && cycle == 0)
+          {
+            timer.enter_subsection("assemble nonlocal");
+            physics.assemble(*nonlocal);
+            timer.leave_subsection();
+          }
+        if (local)
+          {
+            timer.enter_subsection("assemble local");
+            physics.assemble(*local);
+            timer.leave_subsection();
+          }
+
+        OverlapQuadrature<dim> overlap;
+        if (nonlocal && local)
+          {
+            timer.enter_subsection("assemble coupling");
+            overlap = create_overlap_quadrature(geometry,
+                                                eps,
+                                                *nonlocal,
+                                                local->get_dof_handler());
+            timer.leave_subsection();
+          }
+        timer.enter_subsection("solve");
+        solution = solve_level(nonlocal ? &nonlocal->get_model() : nullptr,
+                               local ? &local->get_model() : nullptr,
+                               overlap,
+                               physics.coupling(),
+                               record);
+        timer.leave_subsection();
+        solutions.push_back(solution);
+
+        timer.enter_subsection("postprocess");
+        record.n_nonlocal_dofs =
+          nonlocal ? nonlocal->get_model().owned.size() : 0;
+        record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
+        record.n_particles  = nonlocal ? physics.n_particles(*nonlocal) : 0;
+        const TrilinosWrappers::MPI::Vector local_field =
+          local ? local->get_model().ghosted(solution.fields[local_model]) :
+                  TrilinosWrappers::MPI::Vector();
+        const Function<dim> *exact = physics.exact_solution();
+        if (exact)
+          {
+            const ErrorNorms nonlocal_errors =
+              nonlocal ?
+                nonlocal->errors(solution.fields[nonlocal_model], *exact) :
+                ErrorNorms();
+            record_errors<dim>(nonlocal ? &nonlocal_errors : nullptr,
+                               local ? &local->get_dof_handler() : nullptr,
+                               local_field,
+                               *exact,
+                               geometry.nonlocal_region,
+                               geometry.tolerance(),
+                               record);
+          }
+        const std::string report = physics.postprocess(
+          nonlocal.get(), local.get(), solution, local_field, record);
+        timer.leave_subsection();
+
+        if (!output_directory.empty() && write_vtu)
+          {
+            timer.enter_subsection("output");
+            // One file per solve: level, or level and adaptive cycle.
+            const unsigned int step = summary.levels.size();
+            const std::string  suffix =
+              "_level-" + Utilities::int_to_string(step, 2);
+            const std::string directory = output_directory + "/";
+            if (nonlocal)
+              {
+                files.nonlocal.emplace_back(
+                  step,
+                  write_nonlocal_vtu(*nonlocal,
+                                     solution.fields[nonlocal_model],
+                                     exact,
+                                     output_directory,
+                                     physics.nonlocal_file + suffix));
+                write_level_collection(directory + physics.nonlocal_file +
+                                         ".pvd",
+                                       files.nonlocal);
+              }
+            if (local)
+              {
+                files.local.emplace_back(step,
+                                         physics.write_local(
+                                           *local,
+                                           local_field,
+                                           [&](const Point<dim> &p) {
+                                             return geometry.local_region_of(
+                                               p, physics.collar_depth);
+                                           },
+                                           output_directory,
+                                           physics.local_file + suffix));
+                write_level_collection(directory + physics.local_file + ".pvd",
+                                       files.local);
+              }
+            if (physics.grouped_collection)
+              write_grouped_collection(directory + "scene.pvd",
+                                       {files.nonlocal, files.local});
+            timer.leave_subsection();
+          }
+        record_timings(timer, record);
+
+        out << "level " << level
+            << (cycle > 0 ? ", cycle " + std::to_string(cycle) : std::string())
+            << ": h = " << h << ", eps = " << eps << ", " << physics.dofs_label
+            << " = " << record.n_nonlocal_dofs
+            << ", local dofs = " << record.n_local_dofs
+            << ", controls = " << record.n_controls
+            << ", iterations = " << record.iterations
+            << ", J = " << std::scientific << std::setprecision(3)
+            << record.mismatch_J << std::defaultfloat << std::endl
+            << report;
+        summary.levels.push_back(record);
+      }
+  }
+} // namespace ltn
