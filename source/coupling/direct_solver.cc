@@ -10,6 +10,7 @@
 #include <dmumps_c.h>
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 
 namespace ltn
@@ -35,6 +36,23 @@ namespace ltn
       return "MUMPS reports INFOG(1) = " + std::to_string(infog(id, 1)) +
              ", INFOG(2) = " + std::to_string(infog(id, 2));
     }
+    /**
+     * Throw a failure a user can act on where MUMPS could not allocate its
+     * memory in @p phase (INFOG(1) = -13): the system is too large to be
+     * factorized on this machine, and the iterative solvers are the way on.
+     */
+    void
+    check_memory(const DMUMPS_STRUC_C &id, const std::string &phase)
+    {
+      if (infog(id, 1) == -13)
+        throw std::runtime_error(
+          "the sparse direct solver (MUMPS) ran out of memory in the " + phase +
+          " of a system of " + std::to_string(id.n) + " unknowns (" +
+          mumps_error(id) +
+          "); for systems this large, doc/prm_guide.md (\"Large scenes\") "
+          "gives iterative settings that scale");
+    }
+
     /**
      * Replace @p entries on the host by all ranks' entries, in rank order,
      * and empty them elsewhere.
@@ -194,6 +212,7 @@ namespace ltn
 
       id.job = 1;
       dmumps_c(&id);
+      check_memory(id, "analysis");
       AssertThrow(infog(id, 1) >= 0,
                   ExcMessage("the symbolic factorization failed: " +
                              mumps_error(id)));
@@ -211,6 +230,7 @@ namespace ltn
               id.a            = nullptr;
               return;
             }
+          check_memory(id, "factorization");
           if (infog(id, 1) == -10)
             throw SingularFactorization(
               "the matrix is singular: the numeric factorization failed: " +
@@ -285,6 +305,7 @@ namespace ltn
       icntl(id, 20) = 0;
       id.irhs_ptr = id.irhs_sparse = nullptr;
       id.rhs_sparse                = nullptr;
+      check_memory(id, "solve");
       AssertThrow(infog(id, 1) >= 0,
                   ExcMessage("the direct solve failed: " + mumps_error(id)));
       AssertThrow(b.Export(on_host, *to_host, Insert) == 0,
