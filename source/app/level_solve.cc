@@ -15,6 +15,20 @@ namespace ltn
               const CouplingParameters     &parameters,
               LevelRecord                  &record)
   {
+    // Data that are not finite are the user's error, not the solver's:
+    // said so before a direct solver reports the system as singular.
+    bool finite_data = true;
+    for (const DiscreteModel *model : {nonlocal, local})
+      if (model != nullptr)
+        for (const double value : model->rhs)
+          finite_data = finite_data && std::isfinite(value);
+    AssertThrow(Utilities::MPI::min(finite_data ? 1 : 0, MPI_COMM_WORLD) == 1,
+                ExcMessage(
+                  "The data are not finite: an expression of Problem data "
+                  "has values that are not at some particle or quadrature "
+                  "point (a division by zero, a logarithm of a negative "
+                  "number, ...)."));
+
     CouplingSolution solution;
     if (nonlocal != nullptr && local != nullptr)
       {

@@ -17,6 +17,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 
 namespace
 {
@@ -24,6 +25,35 @@ namespace
     "usage: ltn SCENE.prm [--set \"Subsection/.../name=value\"]... "
     "[--output-dir DIR]\n"
     "       ltn --print-parameters\n";
+
+  /**
+   * A failed check (deal.II's AssertThrow, in deal.II or in LtN) for a
+   * user: its message on one line, then where it was raised, for a bug
+   * report; not deal.II's block of the violated condition and the stack.
+   */
+  std::string
+  failure_message(const dealii::ExceptionBase &error)
+  {
+    std::ostringstream info;
+    error.print_info(info);
+    std::istringstream words(info.str());
+    std::string        message, word;
+    while (words >> word)
+      message += (message.empty() ? "" : " ") + word;
+    // what() begins "An error occurred in line <L> of file <F> in function".
+    const std::string what  = error.what();
+    const auto        field = [&](const std::string &before) {
+      const auto begin = what.find(before);
+      if (begin == std::string::npos)
+        return std::string();
+      const auto start = begin + before.size();
+      return what.substr(start, what.find('>', start) - start);
+    };
+    const std::string line = field("in line <"), file = field("of file <");
+    if (!file.empty())
+      message += "\n  (raised at " + file + ":" + line + ")";
+    return message;
+  }
 
   struct CommandLine
   {
@@ -181,6 +211,12 @@ main(int argc, char **argv)
       if (root)
         std::cerr << "ltn: error: " << error.what() << std::endl;
       return 2;
+    }
+  catch (const dealii::ExceptionBase &error)
+    {
+      if (root)
+        std::cerr << "ltn: failed: " << failure_message(error) << std::endl;
+      return 1;
     }
   catch (const std::exception &error)
     {
