@@ -195,9 +195,18 @@ namespace ltn
 
     if constexpr (dim > 1)
       if (geometry.has_nonlocal_model())
-        nonlocal_parameters.validate_particles(geometry,
-                                               local_parameters.degree,
-                                               h0);
+        {
+          nonlocal_parameters.validate_particles(geometry,
+                                                 local_parameters.degree,
+                                                 h0);
+          // One unknown per particle, a collar one horizon deep.
+          nonlocal_parameters.check_particle_count(
+            geometry,
+            discretization.mesh_size(discretization.n_levels - 1),
+            1,
+            1,
+            MPI_COMM_WORLD);
+        }
     // What only elasticity scenes use must not be set here.
     ElasticityData::check_unused(prm);
 

@@ -459,9 +459,18 @@ namespace ltn
                       eps0);
     local_parameters.validate(geometry);
     if (geometry.has_nonlocal_model())
-      nonlocal_parameters.validate_particles(geometry,
-                                             local_parameters.degree,
-                                             h0);
+      {
+        nonlocal_parameters.validate_particles(geometry,
+                                               local_parameters.degree,
+                                               h0);
+        // The displacement and the dilatation, a collar two horizons deep.
+        nonlocal_parameters.check_particle_count(geometry,
+                                                 discretization.mesh_size(
+                                                   discretization.n_levels - 1),
+                                                 2,
+                                                 dim + 1,
+                                                 MPI_COMM_WORLD);
+      }
     section_planes = parse_section_planes<dim>(planes, geometry, h0);
     check_input(!local_parameters.dirichlet_faces.empty(),
                 "Local model/Dirichlet boundaries",

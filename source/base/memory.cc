@@ -3,6 +3,8 @@
 
 #include <ltn/base/memory.h>
 
+#include <unistd.h>
+
 namespace ltn
 {
   double
@@ -12,5 +14,21 @@ namespace ltn
     dealii::Utilities::System::get_memory_stats(stats);
     // VmHWM is in kB.
     return dealii::Utilities::MPI::sum(stats.VmHWM / 1024., comm);
+  }
+
+
+
+  double
+  physical_memory_bytes(const MPI_Comm comm)
+  {
+    // The ranks that share a machine's memory; the first of each counts it.
+    MPI_Comm machine;
+    MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &machine);
+    const bool first_on_machine =
+      dealii::Utilities::MPI::this_mpi_process(machine) == 0;
+    MPI_Comm_free(&machine);
+    const double bytes =
+      double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+    return dealii::Utilities::MPI::sum(first_on_machine ? bytes : 0., comm);
   }
 } // namespace ltn

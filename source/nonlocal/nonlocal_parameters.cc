@@ -1,7 +1,9 @@
 #include <ltn/base/input_error.h>
+#include <ltn/base/memory.h>
 #include <ltn/nonlocal/nonlocal_parameters.h>
 
 #include <cmath>
+#include <limits>
 
 namespace ltn
 {
@@ -147,6 +149,60 @@ namespace ltn
                       to_string(n * spacing) + " a whole number of times");
       }
   }
+
+  template <int dim>
+  void
+  NonlocalParameters::check_particle_count(
+    const Geometry<dim> &geometry,
+    const double         h,
+    const unsigned int   collar_horizons,
+    const unsigned int   unknowns_per_particle,
+    const MPI_Comm       communicator) const
+  {
+    const double spacing = particle_spacing(h);
+    // The lattice spans the nonlocal region and its collar: an upper bound
+    // of the particles it holds (the collar's corners are cut off).
+    double particles = 1;
+    for (unsigned int d = 0; d < dim; ++d)
+      particles *= std::round((geometry.nonlocal_region.upper[d] -
+                               geometry.nonlocal_region.lower[d]) /
+                              spacing) +
+                   2 * std::ceil(collar_horizons * horizon(h) / spacing);
+    const double      unknowns = particles * unknowns_per_particle;
+    const std::string parameter =
+      "Nonlocal model/Particle spacing to mesh size ratio";
+    const std::string lattice =
+      "the finest level's particle lattice (spacing " + to_string(spacing) +
+      ") would hold up to " + to_string(particles) + " particles with " +
+      to_string(unknowns) + " unknowns";
+    check_input(unknowns <= std::numeric_limits<int>::max(),
+                parameter,
+                to_string(spacing_ratio),
+                "at most 2^31 - 1 unknowns, the limit of the 32-bit indices "
+                "of deal.II and Trilinos: " +
+                  lattice);
+    const double memory = physical_memory_bytes(communicator);
+    check_input(64 * unknowns <= memory,
+                parameter,
+                to_string(spacing_ratio),
+                "a lattice that fits the memory: " + lattice +
+                  ", which take at least 64 bytes each (" +
+                  to_string(64 * unknowns / 1e9) + " GB), more than the " +
+                  to_string(memory / 1e9) + " GB of physical memory here");
+  }
+
+  template void
+  NonlocalParameters::check_particle_count(const Geometry<2> &,
+                                           double,
+                                           unsigned int,
+                                           unsigned int,
+                                           MPI_Comm) const;
+  template void
+  NonlocalParameters::check_particle_count(const Geometry<3> &,
+                                           double,
+                                           unsigned int,
+                                           unsigned int,
+                                           MPI_Comm) const;
 
   template void
   NonlocalParameters::validate_particles(const Geometry<2> &,

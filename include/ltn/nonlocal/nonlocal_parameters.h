@@ -45,6 +45,23 @@ namespace ltn
                        const unsigned int   local_degree,
                        const double         h) const;
 
+    /**
+     * Check that the particle lattice of the finest level (mesh size
+     * @p h), with its collar @p collar_horizons horizons deep and
+     * @p unknowns_per_particle unknowns at each particle, can be held: its
+     * unknowns within deal.II's and Trilinos's 32-bit indices, and at
+     * least 64 bytes per unknown (eight vectors of doubles, fewer than any
+     * solver keeps) within the physical memory of the machines of
+     * @p communicator. An InputError names the spacing ratio otherwise.
+     */
+    template <int dim>
+    void
+    check_particle_count(const Geometry<dim> &geometry,
+                         const double         h,
+                         const unsigned int   collar_horizons,
+                         const unsigned int   unknowns_per_particle,
+                         const MPI_Comm       communicator) const;
+
     /** The kernel at mesh size @p h, for a @p dim dimensional model. */
     Kernel
     kernel(const unsigned int dim, const double h) const;
