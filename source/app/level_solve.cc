@@ -25,9 +25,9 @@ namespace ltn
     AssertThrow(Utilities::MPI::min(finite_data ? 1 : 0, MPI_COMM_WORLD) == 1,
                 ExcMessage(
                   "The data are not finite: an expression of Problem data "
-                  "has values that are not at some particle or quadrature "
-                  "point (a division by zero, a logarithm of a negative "
-                  "number, ...)."));
+                  "has values that are not finite at some particle or "
+                  "quadrature point (a division by zero, a logarithm of a "
+                  "negative number, ...)."));
 
     CouplingSolution solution;
     if (nonlocal != nullptr && local != nullptr)

@@ -40,6 +40,8 @@ namespace
     std::string        message, word;
     while (words >> word)
       message += (message.empty() ? "" : " ") + word;
+    if (message.empty() || message == "(none)")
+      message = error.get_exc_name();
     // what() begins "An error occurred in line <L> of file <F> in function".
     const std::string what  = error.what();
     const auto        field = [&](const std::string &before) {

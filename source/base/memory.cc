@@ -27,8 +27,12 @@ namespace ltn
     const bool first_on_machine =
       dealii::Utilities::MPI::this_mpi_process(machine) == 0;
     MPI_Comm_free(&machine);
-    const double bytes =
-      double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
-    return dealii::Utilities::MPI::sum(first_on_machine ? bytes : 0., comm);
+    const long   pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    const double bytes = pages > 0 && page > 0 ? double(pages) * page : 0.;
+    // Zero if any machine does not say.
+    const double smallest = dealii::Utilities::MPI::min(bytes, comm);
+    const double sum =
+      dealii::Utilities::MPI::sum(first_on_machine ? bytes : 0., comm);
+    return smallest > 0 ? sum : 0.;
   }
 } // namespace ltn

@@ -1,7 +1,10 @@
+#include <deal.II/base/types.h>
+
 #include <ltn/base/input_error.h>
 #include <ltn/base/memory.h>
 #include <ltn/nonlocal/nonlocal_parameters.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -175,14 +178,21 @@ namespace ltn
       "the finest level's particle lattice (spacing " + to_string(spacing) +
       ") would hold up to " + to_string(particles) + " particles with " +
       to_string(unknowns) + " unknowns";
-    check_input(unknowns <= std::numeric_limits<int>::max(),
+    // The indices of deal.II's unknowns and of Trilinos's (Epetra's) maps,
+    // 32 bits as Debian builds them.
+    const double largest = std::min<double>(
+      std::numeric_limits<types::global_dof_index>::max(),
+      std::numeric_limits<TrilinosWrappers::types::int_type>::max());
+    check_input(unknowns <= largest,
                 parameter,
                 to_string(spacing_ratio),
-                "at most 2^31 - 1 unknowns, the limit of the 32-bit indices "
-                "of deal.II and Trilinos: " +
+                "at most " + to_string(largest) +
+                  " unknowns, the limit of the indices of deal.II and "
+                  "Trilinos as built here: " +
                   lattice);
+    // Unknown where the system does not say (then not checked).
     const double memory = physical_memory_bytes(communicator);
-    check_input(64 * unknowns <= memory,
+    check_input(memory <= 0 || 64 * unknowns <= memory,
                 parameter,
                 to_string(spacing_ratio),
                 "a lattice that fits the memory: " + lattice +

@@ -10,7 +10,7 @@ namespace ltn
 
   /**
    * The physical memory of the machines the ranks of @p comm run on, in
-   * bytes, each machine counted once.
+   * bytes, each machine counted once; zero where a machine does not say.
    */
   double
   physical_memory_bytes(const MPI_Comm comm);
