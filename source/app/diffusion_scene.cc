@@ -25,17 +25,17 @@ namespace ltn
      * returned, `return DiffusionLevel{...}`.
      */
     template <int dim>
-    struct DiffusionLevel
+    struct DiffusionLevel : SceneLevel<dim>
     {
       using Nonlocal = NonlocalDiffusion<dim>;
       using Local    = PoissonProblem<dim>;
+      using SceneLevel<dim>::geometry;
+      using SceneLevel<dim>::nonlocal_parameters;
+      using SceneLevel<dim>::local_parameters;
+      using SceneLevel<dim>::coupling_parameters;
+      using SceneLevel<dim>::h;
 
-      const Geometry<dim>              &geometry;
-      const NonlocalParameters         &nonlocal_parameters;
-      const LocalParameters<dim>       &local_parameters;
-      const CouplingParameters         &coupling_parameters;
       const MPI_Comm                    communicator;
-      const double                      h;
       const Kernel                      kernel;
       const ProblemData::Functions<dim> data;
       const double                      eps                = kernel.horizon();
@@ -259,12 +259,8 @@ namespace ltn
         const Kernel kernel = nonlocal_parameters.kernel(dim, h);
         // 2D and 3D models are distributed over all ranks; the 1D ones are
         // serial (p4est has no 1D meshes), every rank solving all of it.
-        return DiffusionLevel<dim>{geometry,
-                                   nonlocal_parameters,
-                                   local_parameters,
-                                   coupling_parameters,
+        return DiffusionLevel<dim>{this->level(h),
                                    (dim == 1) ? MPI_COMM_SELF : MPI_COMM_WORLD,
-                                   h,
                                    kernel,
                                    problem_data.functions<dim>(kernel, h)};
       });

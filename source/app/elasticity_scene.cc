@@ -166,20 +166,20 @@ namespace ltn
      * it is returned, `return ElasticityLevel{...}`.
      */
     template <int dim>
-    struct ElasticityLevel
+    struct ElasticityLevel : SceneLevel<dim>
     {
       using Nonlocal = ParticleElasticity<dim>;
       using Local    = ElasticityProblem<dim>;
+      using SceneLevel<dim>::geometry;
+      using SceneLevel<dim>::nonlocal_parameters;
+      using SceneLevel<dim>::local_parameters;
+      using SceneLevel<dim>::coupling_parameters;
+      using SceneLevel<dim>::h;
 
-      const Geometry<dim>                                &geometry;
-      const NonlocalParameters                           &nonlocal_parameters;
-      const LocalParameters<dim>                         &local_parameters;
-      const CouplingParameters                           &coupling_parameters;
       const Material                                     &material;
       const CrackSet<dim>                                &crack_set;
       const std::vector<std::pair<unsigned int, double>> &section_planes;
       const std::string                   &reference_crack_opening;
-      const double                         h;
       const Kernel                         influence;
       const ElasticityData::Functions<dim> f;
       const double                         eps = influence.horizon();
@@ -534,15 +534,11 @@ namespace ltn
     return this->run_levels(
       "elasticity", output_directory, out, [&](const double h) {
         const Kernel influence = nonlocal_parameters.kernel(dim, h);
-        return ElasticityLevel<dim>{geometry,
-                                    nonlocal_parameters,
-                                    local_parameters,
-                                    coupling_parameters,
+        return ElasticityLevel<dim>{this->level(h),
                                     material,
                                     crack_set,
                                     section_planes,
                                     reference_crack_opening,
-                                    h,
                                     influence,
                                     data.functions<dim>(material,
                                                         influence.horizon(),

@@ -21,6 +21,23 @@ namespace ltn
   using namespace dealii;
 
   /**
+   * What the level of every physics (Scene::run_level()) reads of its
+   * scene: the geometry, both models' parameters and the coupling's, and
+   * the level's mesh size.
+   */
+  template <int dim>
+  struct SceneLevel
+  {
+    const Geometry<dim>        &geometry;
+    const NonlocalParameters   &nonlocal_parameters;
+    const LocalParameters<dim> &local_parameters;
+    const CouplingParameters   &coupling_parameters;
+    const double                h;
+  };
+
+
+
+  /**
    * What the scenes of every physics (DiffusionScene, ElasticityScene)
    * share: the parameters of the geometry, of both models, of the
    * discretization, of the coupling and of the output; and the run of a
@@ -79,6 +96,17 @@ namespace ltn
                const std::string    &output_directory,
                ConditionalOStream   &out,
                const PhysicsOfLevel &physics_of_level);
+
+    /** What the level of mesh size @p h reads of this scene. */
+    SceneLevel<dim>
+    level(const double h) const
+    {
+      return {geometry,
+              nonlocal_parameters,
+              local_parameters,
+              coupling_parameters,
+              h};
+    }
 
     std::string          scene_name;
     Geometry<dim>        geometry;
