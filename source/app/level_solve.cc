@@ -15,14 +15,20 @@ namespace ltn
               const CouplingParameters     &parameters,
               LevelRecord                  &record)
   {
+    // Are all entries of these vectors finite, on every rank?
+    const auto all_finite =
+      [](const std::vector<const TrilinosWrappers::MPI::Vector *> &vectors) {
+        bool finite = true;
+        for (const auto *vector : vectors)
+          if (vector != nullptr)
+            for (const double value : *vector)
+              finite = finite && std::isfinite(value);
+        return Utilities::MPI::min(finite ? 1 : 0, MPI_COMM_WORLD) == 1;
+      };
     // Data that are not finite are the user's error, not the solver's:
     // said so before a direct solver reports the system as singular.
-    bool finite_data = true;
-    for (const DiscreteModel *model : {nonlocal, local})
-      if (model != nullptr)
-        for (const double value : model->rhs)
-          finite_data = finite_data && std::isfinite(value);
-    AssertThrow(Utilities::MPI::min(finite_data ? 1 : 0, MPI_COMM_WORLD) == 1,
+    AssertThrow(all_finite({nonlocal ? &nonlocal->rhs : nullptr,
+                            local ? &local->rhs : nullptr}),
                 ExcMessage(
                   "The data are not finite: an expression of Problem data "
                   "has values that are not finite at some particle or "
@@ -99,15 +105,11 @@ namespace ltn
                                 models[k]->communicator);
       }
 
-    bool finite = true;
-    for (const auto &field : solution.fields)
-      for (const double value : field)
-        finite = finite && std::isfinite(value);
-    AssertThrow(Utilities::MPI::min(finite ? 1 : 0, MPI_COMM_WORLD) == 1,
-                ExcMessage(
-                  "The solution is not finite: an expression of Problem "
-                  "data has values that are not (a division by zero, a "
-                  "logarithm of a negative number, ...)."));
+    // The data were finite (checked above): this is the solver's failure.
+    AssertThrow(all_finite({&solution.fields[0], &solution.fields[1]}),
+                ExcMessage("The solution is not finite although the data "
+                           "are: the solver failed (a singular or badly "
+                           "scaled system)."));
     return solution;
   }
 
