@@ -2,7 +2,8 @@
 
 usage: run.py [--ltn build/ltn] [--out DIR]
               [--scenes plate_2d plate_2d_side_4 bar_3d]
-              [--csv FILE] [--png FILE] [--reuse]
+              [--csv FILE] [--png FILE] [--png-all FILE] [--reuse]
+              [--only RUN ...] [--plot-only]
 
 For each scene, runs a sequence of resolutions (the particle spacing halves,
 the horizon stays two spacings) with every solver of the coupled problem and
@@ -14,9 +15,11 @@ all-peridynamic one to a tight tolerance (the observed order is printed and
 written to the CSV). For each coupled run it prints the time the
 all-peridynamic solve would take at the same error, along the line through
 the two finest points of the scene's equal-error line, the all-peridynamic
-CG to a tolerance sized to the error. Writes results.csv (one row per run)
-and error_vs_time.png (error against wall time of the whole run, one curve
-per solver, one panel per scene).
+CG to a tolerance sized to the error. Writes results.csv (one row per run),
+error_vs_time.png (error against wall time of the whole run, one panel per
+scene, the best coupled and the best all-peridynamic curve in each) and
+error_vs_time_all.png (every curve). --plot-only redraws both charts from
+results.csv and runs nothing.
 """
 import argparse
 import csv
@@ -26,6 +29,7 @@ import os
 import re
 import subprocess
 import sys
+import textwrap
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.dirname(os.path.dirname(here))
@@ -37,13 +41,19 @@ parser.add_argument("--out", default=os.path.join(here, "runs"))
 parser.add_argument("--scenes", nargs="+",
                     default=["plate_2d", "plate_2d_side_4", "bar_3d"])
 parser.add_argument("--csv", default=os.path.join(here, "results.csv"))
-parser.add_argument("--png", default=os.path.join(here, "error_vs_time.png"))
+parser.add_argument("--png", default=os.path.join(here, "error_vs_time.png"),
+                    help="the chart of each scene's best two curves")
+parser.add_argument("--png-all",
+                    default=os.path.join(here, "error_vs_time_all.png"),
+                    help="the chart of every curve")
 parser.add_argument("--reuse", action="store_true",
                     help="keep the runs whose summary.json exists (resume)")
 parser.add_argument("--only", nargs="+", metavar="RUN",
                     help="run only these curves (their names as in the CSV; "
                     "each scene run needs its reference and its "
                     "equal-error line)")
+parser.add_argument("--plot-only", action="store_true",
+                    help="redraw the charts from the CSV, run nothing")
 options = parser.parse_args()
 
 all_peridynamic = ["Geometry/Models=nonlocal only"]
@@ -52,7 +62,8 @@ scalable = ["Coupling/Model solvers=preconditioned gmres",
             "Nonlocal model/Operator=matrix-free",
             "Coupling/Relative tolerance=1e-10",
             "Coupling/Model solver tolerance=1e-12"]
-# The same with CG on the particle model's free block (doc §16).
+# The same with CG on the particle model's free block
+# (doc/discretization.md, 'Iterative model solvers').
 # The finite element model factorized: one local solve per local coarse
 # column and two per outer iteration, on a coarse mesh.
 scalable_cg = scalable + ["Coupling/Model solvers=preconditioned cg",
@@ -175,7 +186,8 @@ def plate_sized_fem_to_1_80(side=2):
 # 1.5 log2(w / (8 eps)) where the overlap w is more than 8 horizons eps
 # wide: on the sized region from 1/640 on, 1.5, 3, 3.9 and 4.5 at 1/640,
 # 1/1280, 1/1920 and 1/2560), and the last curves the crack opening field
-# too (the default in 2D since the fourteenth session, doc §19).
+# too (the default in 2D since the fourteenth session;
+# doc/discretization.md, 'A coarse level for the controls').
 baseline = ["Coupling/Collar layer weight=0",
             "Coupling/Crack opening coarse fields=false"]
 collar_layer_weighted = ["Coupling/Collar layer weight=auto"]
@@ -251,8 +263,8 @@ scenes = {
             "crack, FEM cells at least 0.0125, tolerance 1e-6":
                 (scalable_cg_loose + plate_sized_fem_to_1_80(),
                  plate_halving_levels),
-            # The same with the collar layer weighted (doc §19), also at
-            # 1/1920.
+            # The same with the collar layer weighted (doc/discretization.md,
+            # 'A coarse level for the controls'), also at 1/1920.
             "coupled, reduced space cg, cg matrix-free, region sized to the "
             "crack, FEM cells at least 0.0125, tolerance 1e-6, collar layer "
             "weighted":
@@ -378,7 +390,7 @@ if options.only:
                              (name, ", ".join('"%s"' % m for m in missing)))
 
 rows = []
-for scene in options.scenes:
+for scene in [] if options.plot_only else options.scenes:
     if not scenes[scene]["runs"]:
         continue
     results = {}
@@ -467,8 +479,8 @@ for scene in options.scenes:
             "error": "%.3g" % error(summary),
         })
 
-# The rows of the curves not run now (other scenes, or curves --only left
-# out) are kept from the CSV.
+# The rows of the curves not run now (other scenes, curves --only left
+# out, or every curve with --plot-only) are kept from the CSV.
 if os.path.exists(options.csv):
     ran = {(row["scene"], row["run"]) for row in rows}
     with open(options.csv, newline="") as f:
@@ -476,35 +488,152 @@ if os.path.exists(options.csv):
                 if (row["scene"], row["run"]) not in ran]
     order = list(scenes)
     rows = sorted(kept + rows, key=lambda row: order.index(row["scene"]))
-with open(options.csv, "w", newline="") as f:
-    writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-    writer.writeheader()
-    writer.writerows(rows)
+if not options.plot_only:
+    with open(options.csv, "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
+        writer.writeheader()
+        writer.writerows(rows)
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+from matplotlib.ticker import FuncFormatter
 
 shown = [s for s in scenes if any(r["scene"] == s for r in rows)]
-# One colour per solver in every panel.
-names = list(dict.fromkeys(n for s in shown for n in curves[s]))
-colour = {n: plt.get_cmap("tab20")(i % 20) for i, n in enumerate(names)}
-# The legends go below the panels: inside, they hid the plate's curves.
-figure, axes = plt.subplots(1, len(shown), figsize=(7 * len(shown), 7.5),
-                            squeeze=False)
-for axis, scene in zip(axes[0], shown):
-    for name in curves[scene]:
-        mine = [r for r in rows if r["scene"] == scene and r["run"] == name]
-        if not mine:
-            continue
-        axis.loglog([float(r["total_s"]) for r in mine],
-                    [float(r["error"]) for r in mine],
-                    "o--" if name.startswith("all") else "s-", label=name,
-                    color=colour[name])
-    axis.set_title(scene + ": error of the max crack opening")
-    axis.set_xlabel("wall time of the run (s), 1 rank")
-    axis.set_ylabel("relative error")
-    axis.grid(True, which="both", alpha=0.3)
-    axis.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.12))
-figure.tight_layout()
-figure.savefig(options.png, dpi=120, bbox_inches="tight")
+titles = {"plate_2d": "plate_2d: 2D plate of side 2",
+          "plate_2d_side_4": "plate_2d_side_4: 2D plate of side 4",
+          "bar_3d": "bar_3d: 3D bar"}
+# The two sides, as the CSV's run names start, and the colour and line of
+# each side's best curve in both charts; the chart of every curve draws the
+# others thinner, in the colours of `others`.
+sides = {"coupled": ("tab:blue", "s-"), "all peridynamic": ("tab:orange",
+                                                           "o--")}
+others = ["tab:green", "tab:red", "tab:purple", "tab:brown", "tab:pink",
+          "tab:gray", "tab:olive", "tab:cyan", "black"]
+# The chart's short names: each phrase of a CSV name and its abbreviation,
+# the longer phrases first (no-break spaces keep a number on its line).
+abbreviations = [
+    ("all peridynamic, ", ""),
+    ("coupled, ", ""),
+    ("reduced space cg, cg matrix-free", "reduced-space CG, matrix-free"),
+    ("reduced space cg", "reduced-space CG"),
+    ("cg matrix-free", "CG, matrix-free"),
+    ("gmres matrix-free", "GMRES, matrix-free"),
+    ("full space gmres", "full-space GMRES"),
+    ("full space direct", "full-space direct"),
+    ("FEM cells at least 0.0125", "FEM cells ≥\u00a01/80"),
+    ("FE_Q(2) on cells of 0.0625", "FE_Q(2) on cells of 1/16"),
+    ("tolerance ", "to\u00a0"),
+    ("collar layer weighted", "collar weighted"),
+]
+
+
+def wrap(text, width):
+    """`text` in lines of at most `width`, broken at spaces only (not in
+    "matrix-free" or "1e-6")."""
+    return textwrap.fill(text, width, break_on_hyphens=False)
+
+
+def short_name(run):
+    """`run`'s side, then its abbreviated settings in parentheses."""
+    side = next(s for s in sides if run.startswith(s))
+    for phrase, abbreviation in abbreviations:
+        run = run.replace(phrase, abbreviation)
+    return "%s (%s)" % (side.replace(" ", "-"), run)
+
+
+def runs_of(scene, name):
+    """The CSV rows of one curve, coarsest first."""
+    return sorted((r for r in rows
+                   if r["scene"] == scene and r["run"] == name),
+                  key=lambda r: int(r["level"]))
+
+
+def best(scene, side):
+    """The rule for "best" (README.md, "The charts"): of the scene's curves
+    of one side, the fastest (`total_s`) at the finest `level` any of them
+    reached. At one level every curve has the same particle spacing, so
+    they are ranked at the same discretization, not at equal error: a
+    curve whose FEM model cancels part of the particles' error (the bar's
+    on FE_Q(1) cells of 1/8, HISTORY.md, ninth session) does not win on
+    that."""
+    mine = [r for name in curves[scene] if name.startswith(side)
+            for r in runs_of(scene, name)]
+    finest = max(int(r["level"]) for r in mine)
+    winner = min((r for r in mine if int(r["level"]) == finest),
+                 key=lambda r: float(r["total_s"]))
+    print(scene, "best", side, "curve:", winner["run"], "(%s s at level %d)"
+          % (winner["total_s"], finest))
+    return winner["run"]
+
+
+def draw(axis, scene, name, label, colour, style, width):
+    """One curve: the error in % against the run's wall time."""
+    mine = runs_of(scene, name)
+    axis.loglog([float(r["total_s"]) for r in mine],
+                [100 * float(r["error"]) for r in mine], style, label=label,
+                color=colour, linewidth=width, markersize=2 + 2.5 * width)
+
+
+def label_axes(axis, scene, y_label=True):
+    """The scene's title, the axes' names and units, ticks and grid."""
+    axis.set_title(titles.get(scene, scene))
+    axis.set_xlabel("wall time of the whole run (s), one rank")
+    if y_label:
+        axis.set_ylabel("relative error of the max crack opening (%)")
+    # Plain numbers, and the 2s and 5s between the powers of ten labelled
+    # too: the bar's and the wide plate's errors span about one decade.
+    plain = FuncFormatter(lambda v, _: "%g" % v)
+    some = FuncFormatter(lambda v, _: "%g" % v if
+                         round(v / 10 ** math.floor(math.log10(v))) in (2, 5)
+                         else "")
+    for ax in (axis.xaxis, axis.yaxis):
+        ax.set_major_formatter(plain)
+        ax.set_minor_formatter(some)
+    axis.grid(True, which="major", alpha=0.5)
+    axis.grid(True, which="minor", alpha=0.15)
+
+
+winners = {scene: {side: best(scene, side) for side in sides}
+           for scene in shown}
+rule = ("(best: the fastest of its side at the finest particle spacing the "
+        "side ran)")
+
+# Fonts large for the figure: the README shows it about 900 pixels wide.
+plt.rcParams.update({"font.size": 13, "legend.fontsize": 12})
+# The chart of the two curves that matter, each scene's panel with its
+# legend below (the names wrap over up to four lines).
+figure, axes = plt.subplots(1, len(shown), figsize=(4.8 * len(shown), 7),
+                            squeeze=False, layout="constrained")
+for i, (axis, scene) in enumerate(zip(axes[0], shown)):
+    for side, (colour, style) in sides.items():
+        name = winners[scene][side]
+        draw(axis, scene, name, wrap(short_name(name), 36), colour,
+             style, 2)
+    label_axes(axis, scene, y_label=i == 0)
+    axis.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16))
+figure.suptitle("Error against wall time: each scene's best coupled and best "
+                "all-peridynamic solve\n" + rule)
+figure.savefig(options.png, dpi=110, bbox_inches="tight")
+
+# Every curve: one row per scene, the legend right of the axes.
+figure, axes = plt.subplots(len(shown), 1, figsize=(14, 6.5 * len(shown)),
+                            squeeze=False, layout="constrained")
+for axis, scene in zip(axes[:, 0], shown):
+    for side, (colour, style) in sides.items():
+        palette = iter(others)
+        for name in curves[scene]:
+            if not name.startswith(side) or not runs_of(scene, name):
+                continue
+            if name == winners[scene][side]:
+                draw(axis, scene, name, wrap(name + " (best)", 60),
+                     colour, style, 2.5)
+            else:
+                draw(axis, scene, name, wrap(name, 60),
+                     next(palette), style, 1.2)
+    label_axes(axis, scene)
+    axis.legend(loc="center left", bbox_to_anchor=(1.02, 0.5),
+                fontsize=9)
+figure.suptitle("Error against wall time, every curve (names as in "
+                "results.csv)\n" + rule)
+figure.savefig(options.png_all, dpi=100, bbox_inches="tight")
