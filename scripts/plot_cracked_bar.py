@@ -35,8 +35,8 @@ from matplotlib.patches import Patch  # noqa: E402
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from vtu_fields import read_vtu  # noqa: E402
 
-# Region tags (doc/discretization.md, section 1), coloured as in
-# plot_fields_2d.py (tab10).
+# Region tags (doc/discretization.md, 'Geometry and region tags'), coloured
+# as in plot_fields_2d.py (tab10).
 REGIONS = {0: "nonlocal", 1: "physical collar", 2: "control collar",
            3: "overlap", 4: "local"}
 COLOURS = {k: plt.get_cmap("tab10")(k) for k in REGIONS}

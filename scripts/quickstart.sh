@@ -31,15 +31,16 @@ install_missing() {
     --no-install-recommends "${missing[@]}"
 }
 
+# build_ltn [TARGET]: the executable alone for `run`, everything for `test`.
 build_ltn() {
   cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release
-  cmake --build "$build" -j "$jobs"
+  cmake --build "$build" -j "$jobs" ${1:+--target "$1"}
 }
 
 case "${1:-}" in
   run)
     install_missing
-    build_ltn
+    build_ltn ltn
     cd "$here"
     "$build/ltn" parameter_files/lps_bar_3d_tensile_crack.prm
     ;;

@@ -5,9 +5,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <ltn/app/diffusion_scene.h>
-#include <ltn/app/elasticity_scene.h>
 #include <ltn/app/parameter_reading.h>
+#include <ltn/app/scene_selection.h>
 #include <ltn/base/blas_threads.h>
 #include <ltn/base/input_error.h>
 #include <ltn/base/memory.h>
@@ -106,21 +105,20 @@ namespace
     return command_line;
   }
   /**
-   * Validate the scene, and only then create its output directory, run it
-   * and write the summary.
+   * Validate the scene (done by its constructor), and only then create its
+   * output directory, run it and write the summary.
    */
   template <class Scene>
   void
-  run_scene(dealii::ParameterHandler   &prm,
+  run_scene(Scene                      &scene,
+            dealii::ParameterHandler   &prm,
             const CommandLine          &command_line,
             dealii::ConditionalOStream &pcout)
   {
     constexpr int dim = Scene::dimension;
     using namespace dealii;
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    const std::string scene_name =
-      std::filesystem::path(command_line.scene_file).stem().string();
-    Scene scene(prm, scene_name);
+    const std::string &scene_name = scene.get_name();
 
     std::string output_directory = command_line.output_directory;
     if (output_directory.empty())
@@ -189,24 +187,10 @@ main(int argc, char **argv)
         }
 
       ltn::read_parameters(prm, command_line.scene_file, command_line.sets);
-      const int dim = prm.get_integer("Dimension");
-      if (prm.get("Model") == "elasticity")
-        {
-          ltn::check_input(dim > 1,
-                           "Dimension",
-                           std::to_string(dim),
-                           "2 or 3 for Model = elasticity");
-          if (dim == 2)
-            run_scene<ltn::ElasticityScene<2>>(prm, command_line, pcout);
-          else
-            run_scene<ltn::ElasticityScene<3>>(prm, command_line, pcout);
-        }
-      else if (dim == 1)
-        run_scene<ltn::DiffusionScene<1>>(prm, command_line, pcout);
-      else if (dim == 2)
-        run_scene<ltn::DiffusionScene<2>>(prm, command_line, pcout);
-      else
-        run_scene<ltn::DiffusionScene<3>>(prm, command_line, pcout);
+      ltn::with_selected_scene(
+        prm,
+        std::filesystem::path(command_line.scene_file).stem().string(),
+        [&](auto &scene) { run_scene(scene, prm, command_line, pcout); });
     }
   catch (const ltn::InputError &error)
     {

@@ -1,10 +1,10 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
-#include <ltn/app/diffusion_scene.h>
-#include <ltn/app/elasticity_scene.h>
 #include <ltn/app/parameter_reading.h>
 #include <ltn/base/input_error.h>
+#include <ltn/scene/diffusion_scene.h>
+#include <ltn/scene/elasticity_scene.h>
 
 #include <fstream>
 #include <sstream>

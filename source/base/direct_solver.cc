@@ -1,7 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
-#include <ltn/coupling/direct_solver.h>
+#include <ltn/base/direct_solver.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Import.h>
@@ -178,7 +178,8 @@ namespace ltn
       icntl(id, 3) = -1;
       icntl(id, 4) = 0;
       // A column permutation that maximizes the product of the diagonal
-      // entries (MC64). The full-space optimality system (doc section 9) has
+      // entries (MC64). The full-space optimality system (doc 'The
+      // full-space KKT system') has
       // zero diagonals at every state not observed on the overlap and every
       // multiplier; without it the factorization delayed 92 % of the pivots
       // (diffusion_3d_convergence: 4.4e11 flops, 1.2e8 factor entries; with
@@ -192,7 +193,7 @@ namespace ltn
       // build runs PORD whether METIS, SCOTCH or its automatic choice is
       // asked for), on a mesh's matrix: the 3D cracked bar's FE_Q(2)
       // model of 83,682 unknowns factorized with 1.4e8 entries and
-      // 2.7e11 flops against 2.0e8 and 6.1e11 (section 10).
+      // 2.7e11 flops against 2.0e8 and 6.1e11 ('The reduced space').
       icntl(id, 7) = ordering == Ordering::nested_dissection ? 4 : 6;
       // Simultaneous row and column iterative scaling, as Amesos set it.
       icntl(id, 8)  = 7;

@@ -1,5 +1,5 @@
 #include <ltn/base/input_error.h>
-#include <ltn/coupling/no_convergence.h>
+#include <ltn/base/no_convergence.h>
 
 namespace ltn
 {

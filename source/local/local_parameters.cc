@@ -2,7 +2,7 @@
 
 #include <ltn/base/input_error.h>
 #include <ltn/local/local_parameters.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 namespace ltn
 {

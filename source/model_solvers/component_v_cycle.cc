@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
-#include <ltn/coupling/component_v_cycle.h>
+#include <ltn/model_solvers/component_v_cycle.h>
 
 #include <ml_MultiLevelPreconditioner.h>
 #include <ml_epetra_utils.h>

@@ -1,6 +1,6 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
-#include <ltn/coupling/model_direct_solver.h>
+#include <ltn/model_solvers/model_direct_solver.h>
 
 #include <Epetra_Import.h>
 #include <Epetra_MultiVector.h>

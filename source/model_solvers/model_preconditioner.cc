@@ -1,4 +1,4 @@
-#include <ltn/coupling/model_preconditioner.h>
+#include <ltn/model_solvers/model_preconditioner.h>
 
 #include <algorithm>
 
@@ -98,17 +98,19 @@ namespace ltn
     // One Chebyshev sweep on the surrogate, not the three of the FEM
     // matrices: what the V-cycle misses of the particle model is mostly its
     // difference from the surrogate, not the surrogate's smooth error
-    // (section 16: the 1e5 and 10^6 bars of benchmarks/scaling take 8 and
+    // ('Iterative model solvers': the 1e5 and 10^6 bars of
+    // benchmarks/scaling take 8 and
     // 12 % more nonlocal CG iterations and 6 % less time).
     parameters.set("smoother: sweeps", 1);
     // ML's finest level multiplies by the surrogate's stencil, not by its
-    // compressed rows (section 16).
+    // compressed rows ('Iterative model solvers').
     amg.initialize(model.surrogate, parameters);
     const Epetra_CrsMatrix &surrogate = model.surrogate.trilinos_matrix();
     stencil = std::make_unique<StencilMatrix>(surrogate);
     if (!stencil->is_stencil() || !stencil->serve_finest_level(amg))
       stencil.reset();
-    // All components through one cycle (section 16): on the 3e5 bar of
+    // All components through one cycle ('Iterative model solvers'): on the
+    // 3e5 bar of
     // benchmarks/scaling (two ranks) the preconditioner took 4.4-4.7 s
     // instead of 7.0-7.2 s, with the same 527 nonlocal CG iterations.
     if (stencil)
@@ -120,13 +122,14 @@ namespace ltn
       cycle.reset();
     // ML's own matrices of those levels, beside the cycle's copies: the
     // 10^6 bar of benchmarks/scaling (two ranks) peaked at 4,939 MB with
-    // them, 4,830 MB without (section 16).
+    // them, 4,830 MB without ('Iterative model solvers').
     if (cycle)
       cycle->release_ml_levels();
     node_in  = std::make_unique<Epetra_MultiVector>(surrogate.DomainMap(),
                                                    surrogate_components);
     node_out = std::make_unique<Epetra_MultiVector>(*node_in);
-    // The short-wave term (doc/discretization.md, section 16): on the 3D
+    // The short-wave term (doc/discretization.md, 'Iterative model
+    // solvers'): on the 3D
     // cracked bar of benchmarks/scaling it took the nonlocal CG iterations
     // from 831 to 600 (1e4) and from 877 to 686 (1e5).
     const IndexSet &rows = model.surrogate.locally_owned_range_indices();

@@ -4,9 +4,9 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
+#include <ltn/base/no_convergence.h>
 #include <ltn/base/partition.h>
-#include <ltn/coupling/model_solver.h>
-#include <ltn/coupling/no_convergence.h>
+#include <ltn/model_solvers/model_solver.h>
 
 #include <algorithm>
 
@@ -70,7 +70,7 @@ namespace ltn
     // only the particle models' lattice surrogate offers: the FEM models
     // keep GMRES. CG's free block keeps the constraint rows of hanging
     // nodes, which are not symmetric.
-    , use_cg(settings.iterative && settings.conjugate_gradients &&
+    , use_cg(settings.kind == ModelSolverKind::preconditioned_cg &&
              model.symmetric_free_block && model.surrogate.m() > 0 &&
              Utilities::MPI::max(model.constrained.n_elements(),
                                  model.communicator) == 0)
@@ -90,7 +90,7 @@ namespace ltn
                           model.communicator) > 0;
     first_control =
       control_partition.is_empty() ? 0 : control_partition.nth_index_in_set(0);
-    if (settings.iterative)
+    if (settings.iterative())
       {
         forward_system = std::make_unique<SchurComplement>(model, false);
         preconditioner = std::make_unique<ModelPreconditioner>(
@@ -200,7 +200,8 @@ namespace ltn
     // control rows are displacements, the free block's rows forces, so a
     // tolerance on |b| tightened the forward solves by |S_FO theta| /
     // |theta|, about 400 on the 1e4 bar of benchmarks/scaling at E = 1, and
-    // by 2e11 times more in pascals (doc/discretization.md, section 16).
+    // by 2e11 times more in pascals (doc/discretization.md, 'Iterative
+    // model solvers').
     const double rhs_norm = rhs.l2_norm();
     control.set_tolerance(tolerance * rhs_norm);
     if (rhs_norm > 0 && use_cg)

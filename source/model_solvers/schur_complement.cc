@@ -1,5 +1,5 @@
 #include <ltn/base/partition.h>
-#include <ltn/coupling/schur_complement.h>
+#include <ltn/model_solvers/schur_complement.h>
 
 #include <algorithm>
 #include <cmath>

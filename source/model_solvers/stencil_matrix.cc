@@ -1,7 +1,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 
-#include <ltn/coupling/stencil_matrix.h>
+#include <ltn/model_solvers/stencil_matrix.h>
 
 #include <Epetra_MpiComm.h>
 #include <ml_MultiLevelPreconditioner.h>

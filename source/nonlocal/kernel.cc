@@ -1,27 +1,28 @@
-#include <ltn/base/input_error.h>
 #include <ltn/nonlocal/kernel.h>
 
 #include <cmath>
 
 namespace ltn
 {
-  Kernel::Kernel(const std::string &name,
+  Kernel::Kernel(const KernelKind   kind,
                  const double       fractional_order,
                  const unsigned int dim,
                  const double       horizon)
     : dim(dim)
     , eps(horizon)
   {
-    if (name == "constant")
-      beta = 0;
-    else if (name == "inverse distance")
-      beta = 1;
-    else if (name == "fractional")
-      beta = dim + 2 * fractional_order;
-    else
-      throw InputError("Kernel",
-                       name,
-                       "one of: constant, inverse distance, fractional");
+    switch (kind)
+      {
+        case KernelKind::constant:
+          beta = 0;
+          break;
+        case KernelKind::inverse_distance:
+          beta = 1;
+          break;
+        case KernelKind::fractional:
+          beta = dim + 2 * fractional_order;
+          break;
+      }
 
     // Second moment: c/dim * |S| * int_0^eps r^(dim+1-beta) dr = 1.
     c = dim * (dim + 2 - beta) /

@@ -109,7 +109,8 @@ namespace ltn
         }
     model.surrogate.compress(VectorOperation::insert);
     model.surrogate_collar.compress(VectorOperation::insert);
-    // Measured optimum (section 16): 0.6 for 2D diffusion (eps = 3h), 2D
+    // Measured optimum ('Iterative model solvers'): 0.6 for 2D diffusion
+    // (eps = 3h), 2D
     // LPS with a crack (eps = 2h) and the 3D cracked bar (eps = 2h) alike.
     // The two terms overlap at wavelengths between h and eps, hence less
     // than 1.
@@ -118,7 +119,8 @@ namespace ltn
                               (diagonal * spacing * spacing / (2 * dim));
     model.node_dofs            = n_components;
     model.surrogate_components = n_field_components;
-    // Measured (section 16, "The hierarchy's size"; ModelPreconditioner).
+    // Measured ('Iterative model solvers', "The hierarchy's size";
+    // ModelPreconditioner).
     model.surrogate_coarsest_rows = dim == 2 ? 2000 : 200;
   }
 

@@ -17,8 +17,7 @@ namespace ltn
     {
       prm.declare_entry("Kernel",
                         "constant",
-                        Patterns::Selection("constant|inverse distance|"
-                                            "fractional"),
+                        selection_pattern(kernel_names()),
                         "The kernel gamma(|xi|) of nonlocal diffusion, zero "
                         "beyond the horizon and normalized so that its second "
                         "moment is one: `constant`, `inverse distance` "
@@ -75,7 +74,7 @@ namespace ltn
   {
     prm.enter_subsection("Nonlocal model");
     {
-      kernel_name      = prm.get("Kernel");
+      kernel_kind      = parse_selection(kernel_names(), prm.get("Kernel"));
       fractional_order = prm.get_double("Fractional order");
       fixed_horizon    = prm.get_double("Horizon");
       horizon_ratio    = prm.get_double("Horizon to mesh size ratio");
@@ -90,7 +89,7 @@ namespace ltn
                   "Nonlocal model/Horizon",
                   to_string(fixed_horizon),
                   "the horizon must be positive");
-      check_input(kernel_name != "fractional" ||
+      check_input(kernel_kind != KernelKind::fractional ||
                     (fractional_order > 0 && fractional_order < 1),
                   "Nonlocal model/Fractional order",
                   to_string(fractional_order),
@@ -228,6 +227,6 @@ namespace ltn
   Kernel
   NonlocalParameters::kernel(const unsigned int dim, const double h) const
   {
-    return Kernel(kernel_name, fractional_order, dim, horizon(h));
+    return Kernel(kernel_kind, fractional_order, dim, horizon(h));
   }
 } // namespace ltn

@@ -93,7 +93,7 @@ namespace ltn
       model);
     model.eliminated = IndexSet(model.owned.size());
     // a_j = a_{-j}: the free block is symmetric, and positive definite
-    // (doc/discretization.md, section 11).
+    // (doc/discretization.md, 'Why the system is nonsingular').
     model.symmetric_free_block = true;
 
     this->assemble_load(rhs, volume_data);

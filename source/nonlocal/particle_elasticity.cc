@@ -175,7 +175,8 @@ namespace ltn
   ScaledBondRows<dim>
   ParticleElasticity<dim>::scaled_bond_rows() const
   {
-    // With q = m / m_i (doc/discretization.md, section 15): the bond
+    // With q = m / m_i (doc/discretization.md, 'Matrix-free particle
+    // operators'): the bond
     // stiffness scales with (1/m_i + 1/m_j), so the displacement blocks
     // by the mean of q_i and q_j; a displacement row reads the partner's
     // dilatation over m_j and its own over m_i; the dilatation row is
@@ -360,8 +361,9 @@ namespace ltn
     for (const auto n : owned_particles)
       model.eliminated.add_index(dof(n, dim));
     model.eliminated.compress();
-    // The displacement rows are the gradient of an energy (section 14 of
-    // doc/discretization.md): with the dilatation eliminated, the free
+    // The displacement rows are the gradient of an energy
+    // (doc/discretization.md, 'Linearized peridynamics (LPS) on
+    // particles'): with the dilatation eliminated, the free
     // block is its Hessian.
     model.symmetric_free_block = true;
 

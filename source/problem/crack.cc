@@ -1,7 +1,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <ltn/base/input_error.h>
-#include <ltn/scene/crack.h>
+#include <ltn/problem/crack.h>
 
 #include <cmath>
 

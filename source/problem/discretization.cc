@@ -1,5 +1,5 @@
 #include <ltn/base/input_error.h>
-#include <ltn/scene/discretization.h>
+#include <ltn/problem/discretization.h>
 
 #include <cmath>
 

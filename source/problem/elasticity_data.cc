@@ -1,7 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <ltn/base/input_error.h>
-#include <ltn/scene/elasticity_data.h>
+#include <ltn/problem/elasticity_data.h>
 
 #include <array>
 #include <vector>

@@ -1,5 +1,5 @@
 #include <ltn/base/input_error.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <cmath>
 #include <sstream>

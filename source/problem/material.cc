@@ -1,5 +1,5 @@
 #include <ltn/base/input_error.h>
-#include <ltn/scene/material.h>
+#include <ltn/problem/material.h>
 
 namespace ltn
 {

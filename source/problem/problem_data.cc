@@ -1,7 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <ltn/base/input_error.h>
-#include <ltn/scene/problem_data.h>
+#include <ltn/problem/problem_data.h>
 
 namespace ltn
 {
@@ -72,19 +72,21 @@ namespace ltn
 
   template <int dim>
   ProblemData::Functions<dim>
-  ProblemData::functions(const Kernel &kernel, const double h) const
+  ProblemData::functions(const double                         horizon,
+                         const std::function<double(double)> &plane_wave_symbol,
+                         const double                         h) const
   {
-    check_input(wave_number * kernel.horizon() <= 20,
+    check_input(wave_number * horizon <= 20,
                 "Problem data/Plane wave number",
                 to_string(wave_number),
                 "k eps must be at most 20 for sigma(k) to be accurate (eps = " +
-                  to_string(kernel.horizon()) + ")");
+                  to_string(horizon) + ")");
     const std::map<std::string, double> constants = {
       {"pi", numbers::PI},
-      {"eps", kernel.horizon()},
+      {"eps", horizon},
       {"h", h},
       {"k", wave_number},
-      {"sigma", kernel.plane_wave_symbol(wave_number)}};
+      {"sigma", plane_wave_symbol(wave_number)}};
 
     const auto make = [&](const std::string &name,
                           const std::string &text,
@@ -123,9 +125,15 @@ namespace ltn
   }
 
   template ProblemData::Functions<1>
-  ProblemData::functions<1>(const Kernel &, double) const;
+  ProblemData::functions<1>(double,
+                            const std::function<double(double)> &,
+                            double) const;
   template ProblemData::Functions<2>
-  ProblemData::functions<2>(const Kernel &, double) const;
+  ProblemData::functions<2>(double,
+                            const std::function<double(double)> &,
+                            double) const;
   template ProblemData::Functions<3>
-  ProblemData::functions<3>(const Kernel &, double) const;
+  ProblemData::functions<3>(double,
+                            const std::function<double(double)> &,
+                            double) const;
 } // namespace ltn

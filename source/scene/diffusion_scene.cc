@@ -1,10 +1,10 @@
-#include <ltn/app/diffusion_scene.h>
-#include <ltn/app/scene.templates.h>
 #include <ltn/base/input_error.h>
 #include <ltn/local/poisson_problem.h>
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
 #include <ltn/nonlocal/particle_diffusion.h>
-#include <ltn/scene/elasticity_data.h>
+#include <ltn/problem/elasticity_data.h>
+#include <ltn/scene/diffusion_scene.h>
+#include <ltn/scene/scene.templates.h>
 
 #include <functional>
 #include <memory>
@@ -14,6 +14,20 @@ namespace ltn
 {
   namespace
   {
+    /** The problem's functions of the level with mesh size @p h and kernel
+     * @p kernel, whose horizon and plane-wave symbol the expressions use. */
+    template <int dim>
+    ProblemData::Functions<dim>
+    level_functions(const ProblemData &data,
+                    const Kernel      &kernel,
+                    const double       h)
+    {
+      return data.functions<dim>(
+        kernel.horizon(),
+        [&kernel](const double k) { return kernel.plane_wave_symbol(k); },
+        h);
+    }
+
     /** The nonlocal discretization of a dimension. */
     template <int dim>
     using NonlocalDiffusion =
@@ -243,7 +257,9 @@ namespace ltn
     for (unsigned int level = 0; level < discretization.n_levels; ++level)
       {
         const double h = discretization.mesh_size(level);
-        problem_data.functions<dim>(nonlocal_parameters.kernel(dim, h), h);
+        level_functions<dim>(problem_data,
+                             nonlocal_parameters.kernel(dim, h),
+                             h);
       }
   }
 
@@ -262,7 +278,9 @@ namespace ltn
         return DiffusionLevel<dim>{this->level(h),
                                    (dim == 1) ? MPI_COMM_SELF : MPI_COMM_WORLD,
                                    kernel,
-                                   problem_data.functions<dim>(kernel, h)};
+                                   level_functions<dim>(problem_data,
+                                                        kernel,
+                                                        h)};
       });
   }
 

@@ -1,10 +1,11 @@
-#include <ltn/app/elasticity_scene.h>
-#include <ltn/app/scene.templates.h>
 #include <ltn/base/discrete_model.h>
 #include <ltn/base/input_error.h>
 #include <ltn/local/elasticity_problem.h>
 #include <ltn/nonlocal/particle_elasticity.h>
 #include <ltn/output/elasticity_output.h>
+#include <ltn/output/fracture_measurements.h>
+#include <ltn/scene/elasticity_scene.h>
+#include <ltn/scene/scene.templates.h>
 
 #include <cmath>
 #include <functional>
@@ -18,7 +19,8 @@ namespace ltn
   {
     /**
      * The opening fields of @p cracks for the coarse level (`Crack opening
-     * coarse fields`, doc/discretization.md, section 19): per crack and
+     * coarse fields`, doc/discretization.md, 'A coarse level for the
+     * controls'): per crack and
      * per direction t along it (orthonormal; its edges' in 3D), the
      * displacement n (n.(x - c)) (t.(x - c))^2, n its normal, c its centre.
      */
@@ -149,15 +151,6 @@ namespace ltn
                                       {"pi", numbers::PI},
                                       {"eps", eps},
                                       {"h", h}});
-    }
-
-    JsonValue
-    tensor_to_json(const double *values, const unsigned int n)
-    {
-      JsonValue array = JsonValue::array();
-      for (unsigned int i = 0; i < n; ++i)
-        array.push_back(values[i]);
-      return array;
     }
 
     /**
@@ -293,101 +286,35 @@ namespace ltn
       const TrilinosWrappers::MPI::Vector &local_field,
       LevelRecord                         &record) const
     {
-      JsonValue          mechanics = JsonValue::object();
-      std::ostringstream report;
-      report << std::setprecision(6);
+      JsonValue   mechanics = JsonValue::object();
+      std::string report;
       if (local)
         {
-          JsonValue sections = JsonValue::array();
-          for (const auto &[d, c] : section_planes)
-            {
-              const Tensor<1, dim> force =
-                local->section_force(local_field, d, c);
-              double area = 1;
-              for (unsigned int e = 0; e < dim; ++e)
-                if (e != d)
-                  area *= geometry.body.upper[e] - geometry.body.lower[e];
-              JsonValue entry = JsonValue::object();
-              entry["plane"]  = std::string(1, "xyz"[d]) + "=" + to_string(c);
-              entry["force"]  = tensor_to_json(force.begin_raw(), dim);
-              entry["mean_stress"] = force[d] / area;
-              report << "  force through "
-                     << "xyz"[d] << " = " << c << ": " << force
-                     << " (mean stress " << force[d] / area << ")\n";
-              sections.push_back(entry);
-            }
-          mechanics["section_forces"] = sections;
-          JsonValue applied           = JsonValue::array();
-          for (unsigned int face = 0; face < 2 * dim; ++face)
-            if (local_parameters.dirichlet_mask(face, dim)
-                  .n_selected_components() < dim)
-              {
-                const Tensor<1, dim> force =
-                  local->applied_force(*f.traction, *f.pressure, face);
-                if (force.norm() > 0)
-                  report << "  applied force on "
-                         << Geometry<dim>::face_name(face) << ": " << force
-                         << "\n";
-                JsonValue entry = JsonValue::object();
-                entry["face"]   = Geometry<dim>::face_name(face);
-                entry["force"]  = tensor_to_json(force.begin_raw(), dim);
-                applied.push_back(entry);
-              }
-          mechanics["applied_forces"] = applied;
+          report += measure_section_forces(*local,
+                                           local_field,
+                                           section_planes,
+                                           geometry.body,
+                                           mechanics["section_forces"]);
+          report += measure_applied_forces(*local,
+                                           local_parameters,
+                                           *f.traction,
+                                           *f.pressure,
+                                           mechanics["applied_forces"]);
         }
       if (nonlocal)
         {
-          JsonValue                        openings = JsonValue::array();
           std::unique_ptr<Expression<dim>> reference;
           if (!reference_crack_opening.empty())
             reference =
               reference_opening<dim>(reference_crack_opening, material, eps, h);
-          for (unsigned int k = 0; k < crack_set.cracks.size(); ++k)
-            {
-              const auto opening =
-                nonlocal->crack_opening(solution.fields[nonlocal_model], k);
-              JsonValue entry  = JsonValue::object();
-              JsonValue points = JsonValue::array();
-              JsonValue values = JsonValue::array();
-              double    max = 0, difference = 0, norm = 0;
-              for (std::size_t i = 0; i < opening.points.size(); ++i)
-                {
-                  points.push_back(
-                    tensor_to_json(opening.points[i].begin_raw(), dim));
-                  values.push_back(opening.opening[i]);
-                  max = std::max(max, opening.opening[i]);
-                  if (reference)
-                    {
-                      const double r = reference->value(opening.points[i]);
-                      difference += std::pow(opening.opening[i] - r, 2);
-                      norm += r * r;
-                    }
-                }
-              const bool sampled  = !opening.points.empty();
-              const bool compared = reference && sampled && norm > 0;
-              report << "  crack " << k << ": ";
-              if (sampled)
-                report << "opening at " << opening.points.size()
-                       << " particle pairs, max " << max;
-              else
-                report << "not measured: no particles face each other "
-                          "across it half a spacing away";
-              if (compared)
-                report << ", relative L2 difference to the reference "
-                       << std::sqrt(difference / norm);
-              report << "\n";
-              entry["points"]      = points;
-              entry["opening"]     = values;
-              entry["max_opening"] = sampled ? JsonValue(max) : JsonValue();
-              if (compared)
-                entry["relative_l2_difference_to_reference"] =
-                  std::sqrt(difference / norm);
-              openings.push_back(entry);
-            }
-          mechanics["crack_openings"] = openings;
+          report += measure_crack_openings(*nonlocal,
+                                           solution.fields[nonlocal_model],
+                                           crack_set.cracks.size(),
+                                           reference.get(),
+                                           mechanics["crack_openings"]);
         }
       record.extras = mechanics;
-      return report.str();
+      return report;
     }
   } // namespace
 

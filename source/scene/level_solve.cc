@@ -1,6 +1,7 @@
-#include <ltn/app/level_solve.h>
 #include <ltn/base/field_errors.h>
-#include <ltn/coupling/model_solver.h>
+#include <ltn/coupling/solvers/optimality_system_solver.h>
+#include <ltn/model_solvers/model_solver.h>
+#include <ltn/scene/level_solve.h>
 
 #include <cmath>
 #include <limits>
@@ -42,9 +43,10 @@ namespace ltn
                                          *local,
                                          overlap,
                                          parameters.tikhonov_parameter);
-        solution             = parameters.solve(system);
-        record.n_controls    = system.n_controls();
-        record.solver_method = parameters.method;
+        solution          = solve_optimality_system(system, parameters);
+        record.n_controls = system.n_controls();
+        record.solver_method =
+          selection_name(coupling_method_names(), parameters.method);
         record.mismatch_J =
           system.objective(solution.fields[0], solution.fields[1]);
       }
@@ -58,9 +60,7 @@ namespace ltn
         solution.model_solvers[k] = solver.statistics();
         solution.iterations       = solution.model_solvers[k].iterations;
         record.solver_method =
-          !parameters.model_solvers.iterative          ? "direct" :
-          parameters.model_solvers.conjugate_gradients ? "preconditioned cg" :
-                                                         "preconditioned gmres";
+          selection_name(model_solver_names(), parameters.model_solvers.kind);
       }
     record.iterations              = solution.iterations;
     record.residual                = solution.residual;

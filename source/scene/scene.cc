@@ -1,4 +1,4 @@
-#include <ltn/app/scene.h>
+#include <ltn/scene/scene.h>
 
 namespace ltn
 {

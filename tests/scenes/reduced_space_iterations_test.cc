@@ -1,5 +1,6 @@
-// The preconditioned reduced-space CG (doc/discretization.md, sections 17
-// and 19): with the block-diagonal preconditioner its iterations grow only
+// The preconditioned reduced-space CG (doc/discretization.md,
+// 'Preconditioning the reduced Hessian' and 'A coarse level for the
+// controls'): with the block-diagonal preconditioner its iterations grow only
 // slowly as h halves at fixed eps/h, while the unpreconditioned CG's grow
 // about 2.5x per halving; the two-level CG (deflated by the nonlocal
 // controls' linear fields and every local control) takes fewer still, and
@@ -73,7 +74,8 @@ TEST_CASE("diffusion: with the surrogate Hessian block of the nonlocal "
           "[solvers][scenes]")
 {
   // The issue's criterion on the diffusion scene (doc/discretization.md,
-  // section 20). With D_n alone the two-level CG takes 6, 8, 10, 13
+  // 'A surrogate model of the nonlocal control block'). With D_n alone
+  // the two-level CG takes 6, 8, 10, 13
   // iterations: the part of H_nn that D_n misses grows with the overlap's
   // width over eps. The surrogate block models it: measured 7, 7, 7, 7.
   const std::string scene    = "diffusion_2d_asymptotic_compatibility";
@@ -174,7 +176,8 @@ TEST_CASE("the two-level reduced-space CG converges with model solver "
           "tolerances as loose as its own",
           "[solvers][scenes]")
 {
-  // The deflation's E^{-1} amplifies the inner solves' errors (doc §19):
+  // The deflation's E^{-1} amplifies the inner solves' errors (doc 'A
+  // coarse level for the controls', "Tolerances"):
   // inner solves to the outer tolerance made this CG stall at 8e-5 until
   // they were held to 1e-2 of it.
   const std::vector<std::string> scalable = {
@@ -203,8 +206,9 @@ TEST_CASE("the collar layer's weight `auto` bounds the top of the outer "
           "CG's spectrum and keeps its solution",
           "[solvers][scenes]")
 {
-  // The cracked plate with an overlap 16 horizons wide (doc §19, "The
-  // collar layer's weight"): D_n misses the smooth part of H_nn there, and
+  // The cracked plate with an overlap 16 horizons wide (doc 'A coarse
+  // level for the controls', "The collar layer's weight"): D_n misses
+  // the smooth part of H_nn there, and
   // the largest Ritz value is 5.9; the weight `auto` gives LPS there,
   // 1.5 log2(w / (8 eps)) = 1.5, takes it to 2.5. Without the crack
   // opening field, which lifts the bottom of the spectrum (the test below):
@@ -246,7 +250,8 @@ TEST_CASE("the crack opening field removes the 2D cracked plate's slowest "
           "mode and keeps the solution",
           "[solvers][scenes]")
 {
-  // The file's plate (doc §19, "Crack opening fields"): the polynomial
+  // The file's plate (doc 'A coarse level for the controls', "Crack
+  // opening fields"): the polynomial
   // columns leave an isolated smallest Ritz value of 0.055; the field
   // e_y (y - 1) (x - 1)^2 takes it to 0.19.
   const SceneRun with =

@@ -202,7 +202,8 @@ TEST_CASE("the reduced-space CG's true residual is its recursive one with "
       CHECK(std::abs(level.true_residual / level.residual - 1) < 1e-2);
     }
   // CG model solvers to 1e-8, relaxed: the true residual may drift above
-  // the recursive one, by a few times (doc/discretization.md, section 19).
+  // the recursive one, by a few times (doc/discretization.md, 'A coarse
+  // level for the controls', "The true residual").
   std::vector<std::string> relaxed = common;
   relaxed.insert(relaxed.end(),
                  {"Coupling/Model solvers=preconditioned cg",

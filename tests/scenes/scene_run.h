@@ -6,9 +6,8 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <ltn/app/diffusion_scene.h>
-#include <ltn/app/elasticity_scene.h>
 #include <ltn/app/parameter_reading.h>
+#include <ltn/app/scene_selection.h>
 
 #include <catch2/catch.hpp>
 
@@ -33,29 +32,10 @@ run_scene(const std::string &scene, const std::vector<std::string> &sets = {})
                        sets);
   dealii::ConditionalOStream quiet(std::cout, false);
   SceneRun                   run;
-  const auto                 solve = [&](auto &&runner) {
+  ltn::with_selected_scene(prm, scene, [&](auto &runner) {
     run.summary   = runner.run("", quiet);
     run.solutions = runner.get_solutions();
-  };
-  if (prm.get("Model") == "elasticity")
-    {
-      if (prm.get_integer("Dimension") == 2)
-        solve(ltn::ElasticityScene<2>(prm, scene));
-      else
-        solve(ltn::ElasticityScene<3>(prm, scene));
-      return run;
-    }
-  switch (prm.get_integer("Dimension"))
-    {
-      case 1:
-        solve(ltn::DiffusionScene<1>(prm, scene));
-        break;
-      case 2:
-        solve(ltn::DiffusionScene<2>(prm, scene));
-        break;
-      default:
-        solve(ltn::DiffusionScene<3>(prm, scene));
-    }
+  });
   return run;
 }
 

@@ -1,8 +1,9 @@
 // The crack opening fields' expansion into the coarse level's monomials
-// (doc/discretization.md, section 19, "Crack opening fields"): the sum of
+// (doc/discretization.md, 'A coarse level for the controls', "Crack
+// opening fields"): the sum of
 // the terms equals the product it expands, in 2D and 3D.
 
-#include <ltn/coupling/affine_product_field.h>
+#include <ltn/coupling/preconditioners/affine_product_field.h>
 
 #include <catch2/catch.hpp>
 

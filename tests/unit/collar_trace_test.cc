@@ -1,4 +1,5 @@
-// The collar's trace weights (doc/discretization.md, section 20): how much
+// The collar's trace weights (doc/discretization.md, 'A surrogate model of
+// the nonlocal control block'): how much
 // each collar layer contributes to the smooth field a particle stencil
 // drives into Omega_n, against the closed form of the two-layer chain.
 

@@ -6,8 +6,8 @@
 
 #include <deal.II/lac/trilinos_precondition.h>
 
-#include <ltn/coupling/component_v_cycle.h>
-#include <ltn/coupling/stencil_matrix.h>
+#include <ltn/model_solvers/component_v_cycle.h>
+#include <ltn/model_solvers/stencil_matrix.h>
 
 #include <Teuchos_ParameterList.hpp>
 #include <catch2/catch.hpp>

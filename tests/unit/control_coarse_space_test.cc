@@ -1,5 +1,6 @@
 // The balancing preconditioner of the two-level control preconditioner
-// (doc/discretization.md, section 19), on a small dense SPD operator: it
+// (doc/discretization.md, 'A coarse level for the controls'), on a small
+// dense SPD operator: it
 // inverts the operator exactly on the coarse span, is symmetric and positive
 // definite, and cuts the CG iterations of a problem whose slowest modes the
 // coarse span holds.
@@ -9,7 +10,7 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
-#include <ltn/coupling/control_coarse_space.h>
+#include <ltn/coupling/preconditioners/control_coarse_space.h>
 
 #include <catch2/catch.hpp>
 

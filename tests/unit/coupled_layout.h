@@ -6,7 +6,7 @@
 
 #include <deal.II/base/function.h>
 
-#include <ltn/coupling/overlap_quadrature.h>
+#include <ltn/coupling/system/overlap_quadrature.h>
 #include <ltn/local/poisson_problem.h>
 
 #include "particle_layout.h"

@@ -1,9 +1,10 @@
 // The Collar layer weight `auto`: the LPS weight of doc/discretization.md,
-// section 19, per level, and only where the Control preconditioner weights
+// 'A coarse level for the controls', per level, and only where the Control
+// preconditioner weights
 // the nonlocal controls' diagonal. The Crack opening coarse fields `auto`:
 // in 2D only, and only where there is a coarse level.
 
-#include <ltn/coupling/coupling_parameters.h>
+#include <ltn/coupling/solvers/coupling_parameters.h>
 
 #include <catch2/catch.hpp>
 

@@ -8,7 +8,7 @@
 
 #include <deal.II/base/function.h>
 
-#include <ltn/coupling/coupling_system.h>
+#include <ltn/coupling/system/coupling_system.h>
 #include <ltn/local/elasticity_problem.h>
 
 #include <catch2/catch.hpp>

@@ -1,5 +1,6 @@
 // The deflated CG of the reduced-space solver (doc/discretization.md,
-// section 19), on small dense normal equations `(F^T W F + alpha I) x = b`
+// 'A coarse level for the controls'), on small dense normal equations
+// `(F^T W F + alpha I) x = b`
 // whose slowest modes the coarse columns hold: it solves them, follows CG
 // with the balancing preconditioner (which needs an adjoint solve per
 // column), and needs one forward solve per column, one per iteration of
@@ -12,8 +13,8 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
-#include <ltn/coupling/control_coarse_space.h>
-#include <ltn/coupling/deflated_cg.h>
+#include <ltn/coupling/preconditioners/control_coarse_space.h>
+#include <ltn/coupling/solvers/deflated_cg.h>
 
 #include <catch2/catch.hpp>
 

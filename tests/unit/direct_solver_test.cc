@@ -1,5 +1,6 @@
-// The sparse direct solver (MUMPS, doc/discretization.md, sections 10 and
-// 16) on a nonsymmetric matrix: A x = b and A^T x = b from the same
+// The sparse direct solver (MUMPS, doc/discretization.md, 'The reduced
+// space' and 'Iterative model solvers') on a nonsymmetric matrix: A x = b
+// and A^T x = b from the same
 // factors, and many right-hand sides in one solve equal to one at a time.
 
 #include <deal.II/base/index_set.h>
@@ -7,7 +8,7 @@
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
-#include <ltn/coupling/direct_solver.h>
+#include <ltn/base/direct_solver.h>
 
 #include <catch2/catch.hpp>
 
@@ -145,7 +146,8 @@ TEST_CASE("nested dissection fills a mesh's matrix less than minimum degree",
 {
   // The matrix of FE_Q(1) on an n^3 grid of nodes (every node coupled to
   // the 26 around it): the couplings of a mesh, which the FEM models'
-  // factorizations are ordered for (doc/discretization.md, section 10).
+  // factorizations are ordered for (doc/discretization.md, 'The reduced
+  // space').
   const int          n    = 24;
   const unsigned int size = n * n * n;
   const IndexSet     rows =

@@ -11,13 +11,13 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <ltn/app/diffusion_scene.h>
 #include <ltn/app/parameter_reading.h>
 #include <ltn/base/field_errors.h>
 #include <ltn/base/input_error.h>
-#include <ltn/coupling/model_solver.h>
 #include <ltn/local/elasticity_problem.h>
+#include <ltn/model_solvers/model_solver.h>
 #include <ltn/output/elasticity_output.h>
+#include <ltn/scene/diffusion_scene.h>
 
 #include <catch2/catch.hpp>
 
@@ -263,7 +263,8 @@ namespace
     const Functions::ZeroFunction<dim>     no_pressure(1);
     problem.assemble(b, u, traction, no_pressure);
     // The direct solver factorizes the symmetric positive definite free
-    // block alone (doc/discretization.md, section 10), with hanging nodes
+    // block alone (doc/discretization.md, 'The reduced space'), with
+    // hanging nodes
     // too (below).
     CHECK(ModelDirectSolver(problem.get_model()).factorizes_free_block());
     auto solution = solve(problem);

@@ -1,5 +1,6 @@
 // The particle models' free block (the Schur complement of the LPS
-// dilatation at the free displacements; doc/discretization.md, section 16)
+// dilatation at the free displacements; doc/discretization.md,
+// 'Iterative model solvers')
 // is symmetric and positive, for nonlocal diffusion and LPS in 2D and 3D,
 // with cracks (an inner one and one across the lattice) and a collar partly
 // outside the body, assembled and matrix-free; its products from and at the
@@ -9,9 +10,9 @@
 // the direct solver factorizes that block alone (ModelDirectSolver), and
 // solves as the LU of the whole matrix does.
 
-#include <ltn/coupling/model_direct_solver.h>
-#include <ltn/coupling/model_solver.h>
-#include <ltn/coupling/schur_complement.h>
+#include <ltn/model_solvers/model_direct_solver.h>
+#include <ltn/model_solvers/model_solver.h>
+#include <ltn/model_solvers/schur_complement.h>
 
 #include <catch2/catch.hpp>
 
@@ -105,9 +106,8 @@ namespace
   check_solves(const DiscreteModel &assembled, const DiscreteModel &matrix_free)
   {
     ModelSolverSettings settings;
-    settings.iterative           = true;
-    settings.conjugate_gradients = true;
-    settings.relative_tolerance  = 1e-12;
+    settings.kind               = ModelSolverKind::preconditioned_cg;
+    settings.relative_tolerance = 1e-12;
     const ModelSolver cg(matrix_free, true, settings);
     const ModelSolver direct(assembled, true);
 

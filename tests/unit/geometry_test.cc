@@ -1,6 +1,6 @@
 // Derived regions of the seed's 1D layout and of a 2D layout.
 
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <catch2/catch.hpp>
 

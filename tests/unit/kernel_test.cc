@@ -68,7 +68,10 @@ TEST_CASE("kernel second moments are one", "[kernel]")
          {"constant", "inverse distance", "fractional"})
       for (const double eps : {0.05, 0.3, 2.})
         {
-          const Kernel kernel(name, 0.4, dim, eps);
+          const Kernel kernel(parse_selection(kernel_names(), name),
+                              0.4,
+                              dim,
+                              eps);
           INFO(name << " dim " << dim << " eps " << eps);
           CHECK(second_moment(kernel, dim) == Approx(1.).epsilon(1e-12));
         }
@@ -79,17 +82,17 @@ TEST_CASE("kernel second moments are one", "[kernel]")
 TEST_CASE("kernel constants match the design's table", "[kernel]")
 {
   const double eps = 0.7;
-  CHECK(Kernel("constant", 0.5, 1, eps).scale() ==
+  CHECK(Kernel(KernelKind::constant, 0.5, 1, eps).scale() ==
         Approx(3. / (2 * std::pow(eps, 3))).epsilon(1e-14));
-  CHECK(Kernel("constant", 0.5, 2, eps).scale() ==
+  CHECK(Kernel(KernelKind::constant, 0.5, 2, eps).scale() ==
         Approx(4. / (M_PI * std::pow(eps, 4))).epsilon(1e-14));
-  CHECK(Kernel("constant", 0.5, 3, eps).scale() ==
+  CHECK(Kernel(KernelKind::constant, 0.5, 3, eps).scale() ==
         Approx(15. / (4 * M_PI * std::pow(eps, 5))).epsilon(1e-14));
-  CHECK(Kernel("inverse distance", 0.5, 3, eps).scale() ==
+  CHECK(Kernel(KernelKind::inverse_distance, 0.5, 3, eps).scale() ==
         Approx(3. / (M_PI * std::pow(eps, 4))).epsilon(1e-14));
-  CHECK(Kernel("inverse distance", 0.5, 2, eps).scale() ==
+  CHECK(Kernel(KernelKind::inverse_distance, 0.5, 2, eps).scale() ==
         Approx(3. / (M_PI * std::pow(eps, 3))).epsilon(1e-14));
-  CHECK(Kernel("fractional", 0.25, 1, eps).scale() ==
+  CHECK(Kernel(KernelKind::fractional, 0.25, 1, eps).scale() ==
         Approx(0.75 / std::pow(eps, 1.5)).epsilon(1e-14));
 }
 
@@ -104,20 +107,20 @@ TEST_CASE("plane-wave symbol matches closed forms", "[kernel]")
       {
         INFO("eps " << eps << " k " << k);
         // 1D constant: 4 c (sin(k eps) / k - eps).
-        const Kernel k1("constant", 0.5, 1, eps);
+        const Kernel k1(KernelKind::constant, 0.5, 1, eps);
         CHECK(k1.plane_wave_symbol(k) ==
               Approx(4 * k1.scale() * (std::sin(k * eps) / k - eps))
                 .epsilon(1e-11));
         // 3D constant: 8 pi c ((sin(k eps) - k eps cos(k eps)) / k^3
         //                      - eps^3 / 3).
-        const Kernel k3("constant", 0.5, 3, eps);
+        const Kernel k3(KernelKind::constant, 0.5, 3, eps);
         const double closed_3d =
           8 * M_PI * k3.scale() *
           ((std::sin(k * eps) - k * eps * std::cos(k * eps)) / std::pow(k, 3) -
            std::pow(eps, 3) / 3);
         CHECK(k3.plane_wave_symbol(k) == Approx(closed_3d).epsilon(1e-10));
         // 2D constant: 4 pi c (eps J1(k eps) / k - eps^2 / 2).
-        const Kernel k2("constant", 0.5, 2, eps);
+        const Kernel k2(KernelKind::constant, 0.5, 2, eps);
         const double closed_2d =
           4 * M_PI * k2.scale() *
           (eps * std::cyl_bessel_j(1., k * eps) / k - eps * eps / 2);
@@ -135,7 +138,7 @@ TEST_CASE("plane-wave symbol of singular kernels by quadrature", "[kernel]")
     for (const double s : {0.1, 0.5, 0.9})
       {
         const double eps = 0.2, k = 7;
-        const Kernel kernel(name, s, 1, eps);
+        const Kernel kernel(parse_selection(kernel_names(), name), s, 1, eps);
         const auto rule = gauss_jacobi_unit_interval(20, 2 - kernel.exponent());
         double     integral = 0;
         for (unsigned int q = 0; q < rule.size(); ++q)
@@ -157,7 +160,7 @@ TEST_CASE("plane-wave symbol tends to -k^2 as eps -> 0", "[kernel]")
 {
   for (const unsigned int dim : {1u, 2u, 3u})
     {
-      const Kernel kernel("inverse distance", 0.5, dim, 1e-4);
+      const Kernel kernel(KernelKind::inverse_distance, 0.5, dim, 1e-4);
       CHECK(kernel.plane_wave_symbol(5.) == Approx(-25.).epsilon(1e-6));
     }
 }

@@ -1,12 +1,13 @@
 // The full-space optimality system without a matrix (KktOperator,
-// doc/discretization.md section 18) is the assembled system of section 9
+// doc/discretization.md, 'The full-space system without a matrix') is the
+// assembled system of 'The full-space KKT system'
 // with the multipliers scaled: K_s = diag(I, sI) K diag(I, sI), and its
 // right-hand side diag(I, sI) b. Checked on random vectors for 2D nonlocal
 // diffusion on the shared particle layout coupled to Poisson, with the
 // particle operator assembled and matrix-free, Tikhonov term on.
 
-#include <ltn/coupling/full_space_direct_solver.h>
-#include <ltn/coupling/kkt_operator.h>
+#include <ltn/coupling/solvers/full_space_direct_solver.h>
+#include <ltn/coupling/system/kkt_operator.h>
 
 #include <catch2/catch.hpp>
 

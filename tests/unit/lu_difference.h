@@ -3,8 +3,8 @@
 // ModelDirectSolver against MUMPS's LU of a model's whole matrix, shared by
 // the tests of the models whose free block it factorizes alone.
 
-#include <ltn/coupling/direct_solver.h>
-#include <ltn/coupling/model_direct_solver.h>
+#include <ltn/base/direct_solver.h>
+#include <ltn/model_solvers/model_direct_solver.h>
 
 #include <catch2/catch.hpp>
 

@@ -7,7 +7,7 @@
 // takes no iterations. CG and GMRES take the same iterations and give the
 // same state whatever the units of the moduli.
 
-#include <ltn/coupling/model_solver.h>
+#include <ltn/model_solvers/model_solver.h>
 #include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/nonlocal/particle_elasticity.h>
 
@@ -50,9 +50,9 @@ namespace
         const bool       conjugate_gradients)
   {
     ModelSolverSettings settings;
-    settings.iterative           = true;
-    settings.conjugate_gradients = conjugate_gradients;
-    settings.relative_tolerance  = 1e-10;
+    settings.kind = conjugate_gradients ? ModelSolverKind::preconditioned_cg :
+                                          ModelSolverKind::preconditioned_gmres;
+    settings.relative_tolerance = 1e-10;
     const ModelSolver iterative(matrix_free.get_model(), false, settings);
     const auto  x = iterative.forward(iterative.new_control_vector(), true);
     SolveResult result{iterative.statistics().iterations, 0};
@@ -101,7 +101,8 @@ namespace
   /**
    * GMRES and CG on a model: less than 1.5x more iterations at h0/8 than at
    * h0 = 1/16, and at most @p most at every h (the preconditioner's
-   * short-wave term, doc/discretization.md section 16: without it these
+   * short-wave term, doc/discretization.md, 'Iterative model solvers':
+   * without it these
    * scenes take 35-40 with the V-cycle's one Chebyshev sweep).
    */
   template <typename MakeParticles>
@@ -134,7 +135,7 @@ namespace
     crack.corners[0] = Point<2>(0.75 + h / 2, 0.375);
     crack.corners[1] = Point<2>(0.75 + h / 2, 0.625);
     return ParticleElasticity<2>(geometry,
-                                 Kernel("constant", 0.5, 2, 2 * h),
+                                 Kernel(KernelKind::constant, 0.5, 2, 2 * h),
                                  h,
                                  modulus,
                                  modulus,
@@ -173,7 +174,10 @@ TEST_CASE("particle model Krylov iterations do not grow with 1/h at fixed "
     const Geometry<2> geometry = all_nonlocal<2>();
     const auto        make     = [&](const double h, const bool matrix_free) {
       auto particles = std::make_unique<ParticleDiffusion<2>>(
-        geometry, Kernel("constant", 0.5, 2, 3 * h), h, MPI_COMM_WORLD);
+        geometry,
+        Kernel(KernelKind::constant, 0.5, 2, 3 * h),
+        h,
+        MPI_COMM_WORLD);
       particles->assemble(Functions::ConstantFunction<2>(1.),
                           Functions::ConstantFunction<2>(0.),
                           matrix_free);
@@ -194,7 +198,7 @@ TEST_CASE("particle model Krylov iterations do not grow with 1/h at fixed "
         corner[0] += h / 2;
       auto particles = std::make_unique<ParticleElasticity<2>>(
         geometry,
-        Kernel("constant", 0.5, 2, 2 * h),
+        Kernel(KernelKind::constant, 0.5, 2, 2 * h),
         h,
         1.,
         1.,
@@ -206,7 +210,8 @@ TEST_CASE("particle model Krylov iterations do not grow with 1/h at fixed "
       return particles;
     };
     // Measured 22, 22, 26, 26; 20, 20 or 21, 22, 23 with three Chebyshev
-    // sweeps, which cost more than they save (doc/discretization.md, §16).
+    // sweeps, which cost more than they save (doc/discretization.md,
+    // 'Iterative model solvers').
     check_growth(make, 28);
   }
 }
@@ -234,9 +239,8 @@ TEST_CASE("a particle model's forward solve started from a rigid motion at "
     return c == 0 ? 1 - x[1] : x[0];
   };
   ModelSolverSettings settings;
-  settings.iterative           = true;
-  settings.conjugate_gradients = true;
-  settings.relative_tolerance  = 1e-10;
+  settings.kind               = ModelSolverKind::preconditioned_cg;
+  settings.relative_tolerance = 1e-10;
   const ModelSolver solver(model, false, settings);
 
   const auto theta = controls_of(solver, model, rotation);
@@ -290,9 +294,10 @@ TEST_CASE("a particle model's CG and GMRES take the same iterations "
                              true);
           const DiscreteModel &model = particles.get_model();
           ModelSolverSettings  settings;
-          settings.iterative           = true;
-          settings.conjugate_gradients = conjugate_gradients;
-          settings.relative_tolerance  = 1e-8;
+          settings.kind               = conjugate_gradients ?
+                                          ModelSolverKind::preconditioned_cg :
+                                          ModelSolverKind::preconditioned_gmres;
+          settings.relative_tolerance = 1e-8;
           const ModelSolver solver(model, false, settings);
 
           const auto theta = controls_of(solver,

@@ -29,7 +29,10 @@ namespace
                     const std::string &minus_u_second_derivative)
   {
     const Geometry<1>  geometry = seed_geometry();
-    const Kernel       kernel(kernel_name, 0.3, 1, eps);
+    const Kernel       kernel(parse_selection(kernel_names(), kernel_name),
+                        0.3,
+                        1,
+                        eps);
     NonlocalWeakForm1D nonlocal(geometry, kernel, degree, 1. / 32);
     FunctionParser<1>  exact(u), rhs(minus_u_second_derivative);
     nonlocal.assemble(rhs, exact);
@@ -89,7 +92,7 @@ TEST_CASE("nonlocal degrees of freedom are classified by region", "[nonlocal]")
 {
   const Geometry<1>  geometry = seed_geometry();
   const double       h = 1. / 16, eps = 0.15;
-  const Kernel       kernel("constant", 0.5, 1, eps);
+  const Kernel       kernel(KernelKind::constant, 0.5, 1, eps);
   NonlocalWeakForm1D nonlocal(geometry, kernel, 1, h);
   const auto        &points = nonlocal.get_support_points();
   const auto        &model  = nonlocal.get_model();

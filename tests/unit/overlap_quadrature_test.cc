@@ -7,7 +7,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <ltn/coupling/overlap_quadrature.h>
+#include <ltn/coupling/system/overlap_quadrature.h>
 #include <ltn/local/poisson_problem.h>
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
 #include <ltn/nonlocal/particle_diffusion.h>
@@ -26,7 +26,7 @@ TEST_CASE("overlap quadrature interpolates FE fields exactly", "[coupling]")
     for (const double eps : {0.1, 0.125, 0.3})
       {
         const double       h = 1. / 16;
-        const Kernel       kernel("constant", 0.5, 1, eps);
+        const Kernel       kernel(KernelKind::constant, 0.5, 1, eps);
         NonlocalWeakForm1D nonlocal(geometry, kernel, degree, h);
         LocalParameters<1> parameters;
         parameters.degree = degree;
@@ -86,7 +86,7 @@ namespace
     LocalParameters<dim> parameters;
     parameters.degree = degree;
     PoissonProblem<dim>    local(geometry, parameters, h, MPI_COMM_WORLD);
-    const Kernel           kernel("constant", 0.5, dim, eps);
+    const Kernel           kernel(KernelKind::constant, 0.5, dim, eps);
     ParticleDiffusion<dim> particles(geometry, kernel, spacing, MPI_COMM_WORLD);
     const auto             overlap = create_overlap_quadrature(geometry,
                                                    eps,

@@ -40,7 +40,10 @@ namespace
                   const std::string &minus_laplacian)
   {
     const Geometry<dim>    geometry = unit_layout<dim>();
-    const Kernel           kernel(kernel_name, 0.5, dim, m * h);
+    const Kernel           kernel(parse_selection(kernel_names(), kernel_name),
+                        0.5,
+                        dim,
+                        m * h);
     ParticleDiffusion<dim> particles(geometry, kernel, h, MPI_COMM_WORLD);
     const std::string      variables = dim == 2 ? "x,y" : "x,y,z";
     FunctionParser<dim>    u(p), f(minus_laplacian);
@@ -119,8 +122,8 @@ TEST_CASE("stencil moments match the kernel's", "[particles]")
   for (const std::string kernel : {"constant", "inverse distance"})
     for (const double m : {2., 3.5, 5.})
       {
-        const double            h = 0.01;
-        const Kernel            k2(kernel, 0.5, 2, m * h);
+        const double h = 0.01;
+        const Kernel k2(parse_selection(kernel_names(), kernel), 0.5, 2, m * h);
         const LatticeStencil<2> stencil(k2, h);
         INFO(kernel << " m " << m);
         CHECK(stencil.exact_degree() == 4);

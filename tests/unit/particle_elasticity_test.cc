@@ -7,7 +7,7 @@
 
 #include <ltn/base/matrix_rows.h>
 #include <ltn/nonlocal/particle_elasticity.h>
-#include <ltn/scene/material.h>
+#include <ltn/problem/material.h>
 
 #include <catch2/catch.hpp>
 
@@ -158,14 +158,15 @@ namespace
     const Geometry<dim>     geometry = bar_layout<dim>();
     const double            h        = (dim == 2) ? 1. / 32 : 1. / 16;
     const double            lambda = material.lambda(dim), mu = material.mu();
-    ParticleElasticity<dim> particles(geometry,
-                                      Kernel(influence, 0.5, dim, m * h),
-                                      h,
-                                      lambda,
-                                      mu,
-                                      {},
-                                      MPI_COMM_WORLD);
-    std::mt19937            random(dim * 100 + static_cast<int>(10 * m));
+    ParticleElasticity<dim> particles(
+      geometry,
+      Kernel(parse_selection(kernel_names(), influence), 0.5, dim, m * h),
+      h,
+      lambda,
+      mu,
+      {},
+      MPI_COMM_WORLD);
+    std::mt19937 random(dim * 100 + static_cast<int>(10 * m));
     for (unsigned int trial = 0; trial < 2; ++trial)
       {
         const auto           u = random_quadratic<dim>(random);
@@ -235,15 +236,16 @@ namespace
     for (unsigned int k = 0; k < dim; ++k)
       for (unsigned int d = 1; d < dim; ++d)
         inner.corners[k][d] = (k == d) ? 0.6 : 0.4;
-    ParticleElasticity<dim> particles(geometry,
-                                      Kernel(influence, 0.5, dim, 3 * h),
-                                      h,
-                                      lambda,
-                                      mu,
-                                      {inner, crack_across<dim>(plane)},
-                                      MPI_COMM_WORLD);
-    std::mt19937            random(dim);
-    const auto              u = random_rigid_motion<dim>(random);
+    ParticleElasticity<dim> particles(
+      geometry,
+      Kernel(parse_selection(kernel_names(), influence), 0.5, dim, 3 * h),
+      h,
+      lambda,
+      mu,
+      {inner, crack_across<dim>(plane)},
+      MPI_COMM_WORLD);
+    std::mt19937 random(dim);
+    const auto   u = random_rigid_motion<dim>(random);
     particles.assemble(ZeroFunction<dim>(dim), u);
     const double defect = relative_defect(particles, u, Tensor<1, dim>());
     INFO(dim << "D, " << influence << ": rigid motion defect " << defect);

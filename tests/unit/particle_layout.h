@@ -9,8 +9,8 @@
 #include <ltn/base/discrete_model.h>
 #include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/nonlocal/particle_elasticity.h>
-#include <ltn/scene/crack.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/crack.h>
+#include <ltn/problem/geometry.h>
 
 #include <memory>
 #include <random>
@@ -58,7 +58,7 @@ cracked_lps(const double h, const double m, const bool matrix_free)
                                                crack_at<dim>(1 - h / 2, 10)};
   auto particles = std::make_unique<ltn::ParticleElasticity<dim>>(
     particle_layout<dim>(),
-    ltn::Kernel("constant", 0.5, dim, m * h),
+    ltn::Kernel(ltn::KernelKind::constant, 0.5, dim, m * h),
     h,
     1.3,
     0.7,
@@ -79,7 +79,7 @@ layout_diffusion(const double h, const double m, const bool matrix_free)
 {
   auto particles = std::make_unique<ltn::ParticleDiffusion<dim>>(
     particle_layout<dim>(),
-    ltn::Kernel("constant", 0.5, dim, m * h),
+    ltn::Kernel(ltn::KernelKind::constant, 0.5, dim, m * h),
     h,
     MPI_COMM_WORLD);
   const dealii::Functions::ConstantFunction<dim> data(1.);

@@ -3,7 +3,7 @@
 // The seed's 1D layout, shared by the unit tests: body [0, 1.75], nonlocal
 // region (0, 1), overlap width 0.25 (so the local region is [0.75, 1.75]).
 
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 inline ltn::Geometry<1>
 seed_geometry()

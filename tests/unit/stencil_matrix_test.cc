@@ -6,7 +6,7 @@
 
 #include <deal.II/lac/trilinos_precondition.h>
 
-#include <ltn/coupling/stencil_matrix.h>
+#include <ltn/model_solvers/stencil_matrix.h>
 
 #include <Teuchos_ParameterList.hpp>
 #include <catch2/catch.hpp>

@@ -1,13 +1,14 @@
 // The surrogate model of the nonlocal controls' Hessian block
-// (doc/discretization.md, section 20): the lattice surrogate's extension
+// (doc/discretization.md, 'A surrogate model of the nonlocal control
+// block'): the lattice surrogate's extension
 // from the collar reproduces constants, with and without cracks, and the
 // model D + G~^T W G~ is symmetric, bounded below by D, within 6 % of the
 // exact block D + G^T W G on smooth control fields, on all collar layers or
 // on the first alone, and inverted by its saddle-point form, in 2D and 3D.
 
-#include <ltn/coupling/direct_solver.h>
-#include <ltn/coupling/model_solver.h>
-#include <ltn/coupling/surrogate_hessian_block.h>
+#include <ltn/base/direct_solver.h>
+#include <ltn/coupling/preconditioners/surrogate_hessian_block.h>
+#include <ltn/model_solvers/model_solver.h>
 
 #include <catch2/catch.hpp>
 

@@ -27,7 +27,8 @@ namespace ltn
    * A sparse direct solver for a distributed Trilinos matrix: MUMPS
    * (parallel multifrontal, with a fill-reducing ordering), called directly
    * rather than through Trilinos Amesos, for two things Amesos does not
-   * offer (doc/discretization.md, sections 10 and 16):
+   * offer (doc/discretization.md, 'The reduced space' and 'Iterative model
+   * solvers'):
    *
    * - the transposed solve `A^T x = b` from the same factors (MUMPS's
    *   ICNTL(9)), which the adjoint of the reduced-space method needs;
@@ -58,7 +59,8 @@ namespace ltn
     };
 
     /**
-     * The fill-reducing ordering (doc/discretization.md, section 10).
+     * The fill-reducing ordering (doc/discretization.md, 'The reduced
+     * space').
      * `minimum_degree`: approximate minimum degree with detection of
      * quasi-dense rows, for the wide rows of nonlocal stencils and the
      * optimality systems built on them. `nested_dissection`: for the

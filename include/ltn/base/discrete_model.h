@@ -142,7 +142,7 @@ namespace ltn
      * controls to every node there, as the initial guesses of their states:
      * a field the model reproduces (a rigid motion, and away from cracks a
      * linear one) then needs few iterations or none (doc/discretization.md,
-     * section 19).
+     * 'A coarse level for the controls').
      */
     std::vector<std::array<double, 3>> node_positions;
 
@@ -180,7 +180,8 @@ namespace ltn
     std::vector<unsigned int> surrogate_nodes;
     /**
      * The weight of the surrogate's inverse diagonal that the preconditioner
-     * adds to its multigrid cycle (doc/discretization.md, section 16): the
+     * adds to its multigrid cycle (doc/discretization.md, 'Iterative model
+     * solvers'): the
      * surrogate stands in for `M` at long wavelengths, its diagonal at short
      * ones, where a nonlocal operator is nearly diagonal. Zero without a
      * surrogate.
@@ -191,7 +192,8 @@ namespace ltn
     /**
      * The most rows the surrogate's multigrid hierarchy leaves on its
      * coarsest level, which it solves directly (doc/discretization.md,
-     * section 16): the coarse levels of a 3D lattice are dense enough that
+     * 'Iterative model solvers'): the coarse levels of a 3D lattice are
+     * dense enough that
      * a direct solve of thousands of rows costs as much as the finest
      * level's smoothing; a 2D lattice's are not.
      */
@@ -207,10 +209,12 @@ namespace ltn
      * `constrained` symmetric positive definite, and so the surrogate's?
      * Particle models' are (their operator is the Hessian of an energy):
      * their solvers may then use CG on it, for `M` and `M^T` alike
-     * (doc/discretization.md, section 16; SchurComplement's free block
+     * (doc/discretization.md, 'Iterative model solvers'; SchurComplement's
+     * free block
      * keeps constrained rows, so not where there are any). So are the FEM
      * models' (symmetric bilinear forms, hanging nodes condensed), which a
-     * direct solver then factorizes alone (ModelDirectSolver, section 10).
+     * direct solver then factorizes alone (ModelDirectSolver, 'The reduced
+     * space').
      */
     bool symmetric_free_block = false;
     /**

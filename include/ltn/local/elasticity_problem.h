@@ -8,7 +8,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/local/local_problem.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 namespace ltn
 {

@@ -4,7 +4,7 @@
 
 #include <deal.II/fe/component_mask.h>
 
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <map>
 #include <set>

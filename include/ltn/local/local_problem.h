@@ -9,7 +9,7 @@
 #include <ltn/local/closed_model.h>
 #include <ltn/local/local_mesh.h>
 #include <ltn/local/local_parameters.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <functional>
 #include <utility>

@@ -5,7 +5,7 @@
 #include <deal.II/fe/fe_q.h>
 
 #include <ltn/local/local_problem.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 namespace ltn
 {

@@ -2,7 +2,7 @@
 
 #include <deal.II/lac/trilinos_precondition.h>
 
-#include <ltn/coupling/stencil_matrix.h>
+#include <ltn/model_solvers/stencil_matrix.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_MultiVector.h>
@@ -18,7 +18,8 @@ namespace ltn
 
   /**
    * ML's V-cycle on a scalar lattice surrogate, applied to the components of
-   * a field at once (doc/discretization.md, section 16). ML applies its
+   * a field at once (doc/discretization.md, 'Iterative model solvers').
+   * ML applies its
    * cycle to one vector at a time, so one cycle per component read the
    * transfers between the two finest levels and the second level's matrix
    * once per component: on the 3D bars of benchmarks/scaling those are most

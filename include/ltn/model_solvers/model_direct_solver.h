@@ -2,8 +2,8 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <ltn/base/direct_solver.h>
 #include <ltn/base/discrete_model.h>
-#include <ltn/coupling/direct_solver.h>
 
 #include <memory>
 #include <vector>
@@ -14,7 +14,8 @@ namespace ltn
 
   /**
    * A closed model's matrix `M` factorized once (MUMPS), for solves with `M`
-   * and `M^T` (doc/discretization.md, section 10). Outside the free block
+   * and `M^T` (doc/discretization.md, 'The reduced space'). Outside the
+   * free block
    * (controls and fixed degrees of freedom, O) the rows of `M` are
    * identities; the rows of hanging nodes (C, DiscreteModel::constrained)
    * are their constraints, `x_c - sum_k c_ck x_k = 0`, and their columns

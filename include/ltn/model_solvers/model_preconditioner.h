@@ -4,8 +4,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
-#include <ltn/coupling/component_v_cycle.h>
-#include <ltn/coupling/stencil_matrix.h>
+#include <ltn/model_solvers/component_v_cycle.h>
+#include <ltn/model_solvers/stencil_matrix.h>
 
 #include <memory>
 
@@ -15,7 +15,8 @@ namespace ltn
 
   /**
    * The preconditioner of a model's iterative solver (doc/discretization.md,
-   * section 16): algebraic multigrid (Trilinos ML, one V-cycle) on the
+   * 'Iterative model solvers'): algebraic multigrid (Trilinos ML, one
+   * V-cycle) on the
    * model's matrix, or on its scalar surrogate, one V-cycle per component
    * the surrogate stands in for, plus `DiscreteModel::short_wave_weight`
    * times the surrogate's inverse diagonal. Where the model eliminates degrees

@@ -6,9 +6,10 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
-#include <ltn/coupling/model_direct_solver.h>
-#include <ltn/coupling/model_preconditioner.h>
-#include <ltn/coupling/schur_complement.h>
+#include <ltn/base/selection.h>
+#include <ltn/model_solvers/model_direct_solver.h>
+#include <ltn/model_solvers/model_preconditioner.h>
+#include <ltn/model_solvers/schur_complement.h>
 
 #include <array>
 #include <memory>
@@ -18,24 +19,49 @@ namespace ltn
 {
   using namespace dealii;
 
-  /** How a model's equations are solved (subsection `Coupling`). */
-  struct ModelSolverSettings
+  /** The solver of a model's equations (`Coupling/Model solvers`). */
+  enum class ModelSolverKind
   {
+    /** A sparse direct solver (MUMPS), which needs the assembled matrix. */
+    direct,
     /**
-     * GMRES on the SchurComplement, preconditioned by ModelPreconditioner,
-     * instead of a sparse direct solver (which needs the assembled matrix).
+     * GMRES on the SchurComplement, preconditioned by ModelPreconditioner.
      */
-    bool iterative = false;
+    preconditioned_gmres,
     /**
-     * With `iterative`: CG on the free block of the Schur complement where
-     * it is symmetric positive definite (DiscreteModel::symmetric_free_block)
+     * The same, but CG on the free block of the Schur complement where it
+     * is symmetric positive definite (DiscreteModel::symmetric_free_block)
      * and the model has a lattice surrogate, for `M` and `M^T` alike; GMRES
      * elsewhere.
      */
-    bool conjugate_gradients = false;
+    preconditioned_cg
+  };
+
+  /** The names of the model solvers in `Coupling/Model solvers`. */
+  inline const SelectionNames<ModelSolverKind> &
+  model_solver_names()
+  {
+    static const SelectionNames<ModelSolverKind> names = {
+      {ModelSolverKind::direct, "direct"},
+      {ModelSolverKind::preconditioned_gmres, "preconditioned gmres"},
+      {ModelSolverKind::preconditioned_cg, "preconditioned cg"}};
+    return names;
+  }
+
+  /** How a model's equations are solved (subsection `Coupling`). */
+  struct ModelSolverSettings
+  {
+    ModelSolverKind kind = ModelSolverKind::direct;
+
+    /** Does the model solve by a Krylov method (any but `direct`)? */
+    bool
+    iterative() const
+    {
+      return kind != ModelSolverKind::direct;
+    }
     /**
      * The residual reduction relative to the right-hand side of the free
-     * block (doc/discretization.md, section 16).
+     * block (doc/discretization.md, 'Iterative model solvers').
      */
     double       relative_tolerance = 1e-12;
     unsigned int max_iterations     = 1000;
@@ -52,7 +78,7 @@ namespace ltn
     {
       ModelSolverSettings settings = *this;
       if (direct_local_model)
-        settings.iterative = false;
+        settings.kind = ModelSolverKind::direct;
       return settings;
     }
   };
@@ -94,7 +120,8 @@ namespace ltn
    * solves `M x = r + S theta` (see DiscreteModel). The direct solver
    * factorizes `M` and `M^T` once. The iterative one builds their
    * preconditioners once and starts each solve from zero or from a given
-   * guess (doc/discretization.md, section 16, "Starting values").
+   * guess (doc/discretization.md, 'Iterative model solvers', "Starting
+   * values").
    *
    * Controls are numbered `0 .. n_controls - 1` over all ranks, each rank
    * owning a contiguous range: those of its own control degrees of freedom,
@@ -187,7 +214,8 @@ namespace ltn
 
     /**
      * The iterative solve of `M x = b` (@p transpose: `M^T x = b`) by CG
-     * or GMRES on the free block (doc/discretization.md, section 16), from
+     * or GMRES on the free block (doc/discretization.md, 'Iterative model
+     * solvers'), from
      * the initial guess @p x, to the current tolerance relative to the free
      * block's right-hand side (which sets that of @p control).
      */

@@ -15,7 +15,7 @@ namespace ltn
    * A model's system `M x = b` (with @p transpose, `M^T x = b`) with the
    * degrees of freedom `t` whose block of `M` is diagonal (the dilatation
    * of LPS, `DiscreteModel::eliminated`) eliminated (doc/discretization.md,
-   * section 16). With `u` the rest, `M = [[A, B], [C, D]]`,
+   * 'Iterative model solvers'). With `u` the rest, `M = [[A, B], [C, D]]`,
    *
    *   S u = g,  S = A - B D^-1 C,  g = b_u - B D^-1 b_t,
    *   t = D^-1 (b_t - C u),

@@ -17,7 +17,8 @@ namespace ltn
 
   /**
    * The product of a sparse matrix whose rows are a few-point stencil
-   * (doc/discretization.md, section 16): over rows numbered contiguously on
+   * (doc/discretization.md, 'Iterative model solvers'): over rows
+   * numbered contiguously on
    * each rank, every off-diagonal entry of row `g` lies in column `g + o`
    * for `o` from one set of at most eight offsets and has one value `c`,
    *

@@ -9,7 +9,8 @@ namespace ltn
   /**
    * How much each layer of a particle model's collar contributes to the
    * smooth field it drives into `Omega_n` (doc/discretization.md,
-   * section 20). Along an axis normal to a flat collar, a field constant
+   * 'A surrogate model of the nonlocal control block'). Along an axis
+   * normal to a flat collar, a field constant
    * along the collar sees the model's stencil projected onto that axis:
    * weights `w_m` (@p projected_weights, `m = 1 .. M`) of the bonds that
    * reach `m` lattice layers along it. On the half-line of free particles

@@ -2,11 +2,32 @@
 
 #include <deal.II/base/point.h>
 
+#include <ltn/base/selection.h>
+
 #include <string>
 
 namespace ltn
 {
   using namespace dealii;
+
+  /** The kernels of `Nonlocal model/Kernel` (Kernel lists their `beta`). */
+  enum class KernelKind
+  {
+    constant,
+    inverse_distance,
+    fractional
+  };
+
+  /** The names of the kernels in `Nonlocal model/Kernel`. */
+  inline const SelectionNames<KernelKind> &
+  kernel_names()
+  {
+    static const SelectionNames<KernelKind> names = {
+      {KernelKind::constant, "constant"},
+      {KernelKind::inverse_distance, "inverse distance"},
+      {KernelKind::fractional, "fractional"}};
+    return names;
+  }
 
   /**
    * A radial kernel of nonlocal diffusion, `gamma(|xi|) = c |xi|^-beta` for
@@ -28,7 +49,7 @@ namespace ltn
   class Kernel
   {
   public:
-    Kernel(const std::string &name,
+    Kernel(const KernelKind   kind,
            const double       fractional_order,
            const unsigned int dim,
            const double       horizon);

@@ -26,7 +26,8 @@ namespace ltn
   /**
    * The rows of particles whose bonds are some of the stencil's and whose
    * blocks are the shared ones scaled per particle (doc/discretization.md,
-   * section 15, "Rows next to a crack"): particle `i` with intact bonds
+   * 'Matrix-free particle operators', "Rows next to a crack"): particle
+   * `i` with intact bonds
    * `I_i` and scale `q_i` (1 where it has all its bonds) has
    *
    *   (M x)_i = C_i x_i + sum_{k in I_i} (s_{ik} o B_k) x_{i + o_k},
@@ -68,7 +69,8 @@ namespace ltn
 
   /**
    * A particle model's operator without its matrix (doc/discretization.md,
-   * section 15). A particle away from boundaries, collar and cracks has the
+   * 'Matrix-free particle operators'). A particle away from boundaries,
+   * collar and cracks has the
    * same rows as every other such particle up to the shift of its numbers:
    * a dense `n_components x n_components` block per bond offset `o_k` and
    * one for the particle itself,
@@ -165,6 +167,13 @@ namespace ltn
 
   private:
     /**
+     * The doubles of the vectors the forward stencil product works on: one
+     * AVX2 register (two SSE2 ones), and the number of particles it takes
+     * at a time.
+     */
+    static constexpr unsigned int lanes = 4;
+
+    /**
      * For the particles from @p p to the end of its lattice line (or of
      * this rank's range, the number returned), where the bond along `o_k`
      * of particle `i` reaches: number `origin[k] + i`, present if in
@@ -198,6 +207,20 @@ namespace ltn
     void
     apply_stencil(const std::array<const double *, 3> &x,
                   const std::array<std::int64_t, 3>   &x_first,
+                  const ParticleRanges                *within,
+                  double                              *y) const;
+
+    /**
+     * The kernels' part of the product in vmult_rows(): apply_stencil() and
+     * then apply_scaled_rows() for the rows @p rows, with the block size and
+     * the components as compile-time constants (lattice_kernels.cc, the
+     * file compiled for the machine's vector instructions).
+     */
+    void
+    apply_kernels(const std::array<const double *, 3> &x,
+                  const std::array<std::int64_t, 3>   &x_first,
+                  const bool                           transpose,
+                  const RowSubset                      rows,
                   const ParticleRanges                *within,
                   double                              *y) const;
 
@@ -248,7 +271,8 @@ namespace ltn
     std::vector<bool> interior;
     /**
      * The stored rows of the kept components, then of the eliminated ones
-     * (the Schur complement of section 16 asks for each subset in turn).
+     * (the Schur complement of doc/discretization.md, 'Iterative model
+     * solvers', asks for each subset in turn).
      */
     std::array<TrilinosWrappers::SparseMatrix, 2> own_rows;
     /**
@@ -336,11 +360,18 @@ namespace ltn
 
     /** Is bond `k` of scaled particle `s` intact? */
     bool
-    intact(const std::size_t s, const unsigned int k) const;
+    intact(const std::size_t s, const unsigned int k) const
+    {
+      return (scaled_bonds[s * words_per_particle + k / 64] >> (k % 64)) & 1u;
+    }
 
     /** `q` of particle @p j of the reached range. */
     double
-    q_of(const std::int64_t j) const;
+    q_of(const std::int64_t j) const
+    {
+      const int s = scaled_index[j - reach_first];
+      return s < 0 ? 1. : scaled[s].q;
+    }
 
     /** Find the scaled particles (`scaled_rows` as for the constructor). */
     void

@@ -15,7 +15,8 @@ namespace ltn
 
   /**
    * The surrogate of a particle model for algebraic multigrid
-   * (doc/discretization.md, section 16): the nearest-neighbour Laplacian on
+   * (doc/discretization.md, 'Iterative model solvers'): the
+   * nearest-neighbour Laplacian on
    * the lattice,
    *
    *   (L x)_p = diagonal / (2 dim) sum_{q ~ p} (x_p - x_q),
@@ -38,12 +39,14 @@ namespace ltn
    * `L` keeps growing, a nonlocal operator levels off at its diagonal. The
    * preconditioner therefore adds the inverse of `L`'s diagonal, weighted
    * by `model.short_wave_weight` = 0.6 times the ratio of the two long-wave
-   * moduli, to its cycle on `L` (doc/discretization.md, section 16).
+   * moduli, to its cycle on `L` (doc/discretization.md, 'Iterative model
+   * solvers').
    *
    * The same bonds from particles of `Omega_n` to particles of the collar
    * make the coupling `C` (`model.surrogate_collar`): for values `y` on the
    * collar, `L v = C y` gives their discrete harmonic extension `v` into
-   * `Omega_n` (doc/discretization.md, section 20). The model's stencil
+   * `Omega_n` (doc/discretization.md, 'A surrogate model of the nonlocal
+   * control block'). The model's stencil
    * reaches several layers into the collar, and weighs them unequally: each
    * bond takes the collar's values on its axis, layer `m` (`m = 1, 2, ...`)
    * with the weight `collar_trace[m - 1]` (collar_trace_weights()), so that

@@ -3,7 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ltn/nonlocal/kernel.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <string>
 
@@ -66,7 +66,7 @@ namespace ltn
     Kernel
     kernel(const unsigned int dim, const double h) const;
 
-    std::string  kernel_name;
+    KernelKind   kernel_kind      = KernelKind::constant;
     double       fractional_order = 0.5;
     double       fixed_horizon    = 0;
     double       horizon_ratio    = 0;

@@ -9,7 +9,7 @@
 #include <ltn/nonlocal/lattice_stencil.h>
 #include <ltn/nonlocal/particle_lattice.h>
 #include <ltn/nonlocal/particle_model.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <vector>
 

@@ -11,8 +11,8 @@
 #include <ltn/nonlocal/particle_lattice.h>
 #include <ltn/nonlocal/particle_model.h>
 #include <ltn/nonlocal/peridynamic_stencil.h>
-#include <ltn/scene/crack.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/crack.h>
+#include <ltn/problem/geometry.h>
 
 #include <utility>
 #include <vector>
@@ -36,7 +36,8 @@ namespace ltn
    *   theta_i = dim/m_i sum_{j intact} c_j xi . (u_j - u_i),
    *
    * with `A = dim (lambda - mu)`, `B = dim (dim + 2) mu` from the Lamé
-   * constants of the dimension (doc/discretization.md, section 14).
+   * constants of the dimension (doc/discretization.md, 'Linearized
+   * peridynamics (LPS) on particles').
    *
    * The dilatation is an unknown of its own: each particle carries `dim`
    * displacement components and `theta` (degree of freedom

@@ -4,7 +4,7 @@
 #include <deal.II/base/types.h>
 
 #include <ltn/base/discrete_model.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <array>
 #include <cmath>

@@ -11,7 +11,7 @@
 #include <ltn/base/field_errors.h>
 #include <ltn/nonlocal/kernel.h>
 #include <ltn/nonlocal/particle_lattice.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <vector>
 

@@ -28,7 +28,8 @@ namespace ltn
    *
    * which, with the symmetries of the lattice and `m` summed with the same
    * weights, is exactly what makes the discrete operator equal Navier–Cauchy
-   * on every quadratic displacement (doc/discretization.md, section 14).
+   * on every quadratic displacement (doc/discretization.md, 'Linearized
+   * peridynamics (LPS) on particles').
    * Every particle with a complete neighbourhood shares these bonds.
    */
   template <int dim>

@@ -6,8 +6,8 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <ltn/scene/geometry.h>
-#include <ltn/scene/material.h>
+#include <ltn/problem/geometry.h>
+#include <ltn/problem/material.h>
 
 #include <functional>
 #include <string>

@@ -6,7 +6,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <functional>
 #include <string>

@@ -3,7 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <array>
 #include <string>

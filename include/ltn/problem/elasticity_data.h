@@ -3,7 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ltn/base/expression.h>
-#include <ltn/scene/material.h>
+#include <ltn/problem/material.h>
 
 #include <memory>
 #include <string>

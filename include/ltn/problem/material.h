@@ -13,7 +13,8 @@ namespace ltn
    * (plane stress). Both models of a scene take their constants from here:
    * Navier–Cauchy `-[(lambda + mu) grad div u + mu Laplace u] = b` with the
    * Lamé constants of the dimension, and LPS with the constants derived from
-   * them (doc/discretization.md, section 14).
+   * them (doc/discretization.md, 'Linearized peridynamics (LPS) on
+   * particles').
    */
   struct Material
   {

@@ -3,8 +3,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ltn/base/expression.h>
-#include <ltn/nonlocal/kernel.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -46,12 +46,16 @@ namespace ltn
 
     /**
      * Parse every expression with the constants of a level with mesh size
-     * @p h and kernel @p kernel; throws an InputError naming the parameter
-     * of a malformed one.
+     * @p h, whose nonlocal operator has the horizon @p horizon and the
+     * plane-wave symbol @p plane_wave_symbol (`k -> sigma(k)`; the kernel's,
+     * which the problem's data do not depend on otherwise); throws an
+     * InputError naming the parameter of a malformed one.
      */
     template <int dim>
     Functions<dim>
-    functions(const Kernel &kernel, const double h) const;
+    functions(const double                         horizon,
+              const std::function<double(double)> &plane_wave_symbol,
+              const double                         h) const;
 
     std::string exact_solution;
     std::string nonlocal_rhs;

@@ -3,8 +3,8 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <ltn/app/scene.h>
-#include <ltn/scene/problem_data.h>
+#include <ltn/problem/problem_data.h>
+#include <ltn/scene/scene.h>
 
 #include <string>
 

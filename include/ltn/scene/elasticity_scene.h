@@ -3,10 +3,10 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <ltn/app/scene.h>
-#include <ltn/scene/crack.h>
-#include <ltn/scene/elasticity_data.h>
-#include <ltn/scene/material.h>
+#include <ltn/problem/crack.h>
+#include <ltn/problem/elasticity_data.h>
+#include <ltn/problem/material.h>
+#include <ltn/scene/scene.h>
 
 #include <string>
 #include <utility>

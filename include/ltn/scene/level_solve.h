@@ -6,11 +6,11 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <ltn/base/discrete_model.h>
-#include <ltn/coupling/coupling_parameters.h>
-#include <ltn/coupling/coupling_system.h>
-#include <ltn/coupling/overlap_quadrature.h>
+#include <ltn/coupling/solvers/coupling_parameters.h>
+#include <ltn/coupling/system/coupling_system.h>
+#include <ltn/coupling/system/overlap_quadrature.h>
 #include <ltn/output/run_summary.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <string>
 #include <vector>

@@ -3,13 +3,13 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <ltn/coupling/coupling_parameters.h>
-#include <ltn/coupling/coupling_system.h>
+#include <ltn/coupling/solvers/coupling_parameters.h>
+#include <ltn/coupling/system/coupling_system.h>
 #include <ltn/local/local_parameters.h>
 #include <ltn/nonlocal/nonlocal_parameters.h>
 #include <ltn/output/run_summary.h>
-#include <ltn/scene/discretization.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/discretization.h>
+#include <ltn/problem/geometry.h>
 
 #include <functional>
 #include <string>
@@ -67,6 +67,13 @@ namespace ltn
     /** The solution of each level of the last run (for tests). */
     const std::vector<CouplingSolution> &
     get_solutions() const;
+
+    /** The scene's name: its file's, without the extension. */
+    const std::string &
+    get_name() const
+    {
+      return scene_name;
+    }
 
     /** `Output/Directory`: empty unless the scene names one. */
     const std::string &

@@ -6,12 +6,12 @@
 
 #include <deal.II/base/timer.h>
 
-#include <ltn/app/level_solve.h>
-#include <ltn/app/scene.h>
 #include <ltn/base/field_errors.h>
-#include <ltn/coupling/overlap_quadrature.h>
+#include <ltn/coupling/system/overlap_quadrature.h>
 #include <ltn/output/field_output.h>
 #include <ltn/output/nonlocal_output.h>
+#include <ltn/scene/level_solve.h>
+#include <ltn/scene/scene.h>
 
 #include <iomanip>
 #include <memory>
@@ -33,8 +33,9 @@ namespace ltn
                                        ConditionalOStream           &out)
   {
     constexpr types::global_dof_index large = 50000;
-    const bool factorized = !coupling.model_solvers.iterative ||
-                            (coupled && coupling.method == "full space direct");
+    const bool                        factorized =
+      !coupling.model_solvers.iterative() ||
+      (coupled && coupling.method == CouplingMethod::full_space_direct);
     if (factorized && n_unknowns >= large)
       out << "note: the particle model's " << n_unknowns
           << " unknowns are factorized by a direct solver; for scenes this "

@@ -1,4 +1,4 @@
-#include <ltn/coupling/affine_product_field.h>
+#include <ltn/coupling/preconditioners/affine_product_field.h>
 
 #include <map>
 

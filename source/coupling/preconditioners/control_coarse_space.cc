@@ -1,6 +1,6 @@
 #include <deal.II/base/mpi.h>
 
-#include <ltn/coupling/control_coarse_space.h>
+#include <ltn/coupling/preconditioners/control_coarse_space.h>
 
 #include <algorithm>
 #include <array>

@@ -2,7 +2,7 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <ltn/coupling/control_preconditioner.h>
+#include <ltn/coupling/preconditioners/control_preconditioner.h>
 
 namespace ltn
 {
@@ -70,7 +70,8 @@ namespace ltn
         hessian.system.alpha;
     nonlocal_diagonal.compress(VectorOperation::insert);
     // The top modes of D_n^{-1} H_nn lie mostly on the layer whose bonds
-    // reach into Omega_n (section 19, "The collar layer's weight").
+    // reach into Omega_n ('A coarse level for the controls', "The collar
+    // layer's weight").
     if (collar_layer_weight > 0)
       {
         const TrilinosWrappers::MPI::Vector reach =

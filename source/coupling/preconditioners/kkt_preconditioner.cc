@@ -1,4 +1,4 @@
-#include <ltn/coupling/kkt_preconditioner.h>
+#include <ltn/coupling/preconditioners/kkt_preconditioner.h>
 
 namespace ltn
 {

@@ -3,7 +3,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 
 #include <ltn/base/matrix_rows.h>
-#include <ltn/coupling/surrogate_hessian_block.h>
+#include <ltn/coupling/preconditioners/surrogate_hessian_block.h>
 
 #include <algorithm>
 
@@ -55,7 +55,8 @@ namespace ltn
     // general LU took 45-57 s (pivots on the zero diagonal blocks delayed)
     // or, with the rows permuted to put L on the diagonal, 10 s and 100
     // million entries; in 2D at h = 1/256 0.44 s against 0.9 s. Nested
-    // dissection, the FEM models' order, helped in 3D and not in 2D (§20):
+    // dissection, the FEM models' order, helped in 3D and not in 2D (doc
+    // 'A surrogate model of the nonlocal control block'):
     // it keeps minimum degree.
     saddle_point_solver =
       std::make_unique<DirectSolver>(saddle_point,

@@ -1,14 +1,23 @@
 #include <ltn/base/input_error.h>
-#include <ltn/coupling/coupling_parameters.h>
-#include <ltn/coupling/full_space_direct_solver.h>
-#include <ltn/coupling/full_space_gmres_solver.h>
-#include <ltn/coupling/reduced_space_solver.h>
+#include <ltn/coupling/solvers/coupling_parameters.h>
 
 #include <cmath>
 #include <string>
 
 namespace ltn
 {
+  const SelectionNames<CouplingMethod> &
+  coupling_method_names()
+  {
+    static const SelectionNames<CouplingMethod> names = {
+      {CouplingMethod::full_space_direct, "full space direct"},
+      {CouplingMethod::full_space_gmres, "full space gmres"},
+      {CouplingMethod::reduced_space_cg, "reduced space cg"}};
+    return names;
+  }
+
+
+
   void
   CouplingParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -16,9 +25,7 @@ namespace ltn
     {
       prm.declare_entry("Method",
                         "full space direct",
-                        Patterns::Selection("full space direct|"
-                                            "full space gmres|"
-                                            "reduced space cg"),
+                        selection_pattern(coupling_method_names()),
                         "How to solve the optimality system: `full space "
                         "direct` (states, controls and multipliers in one "
                         "saddle-point system, sparse direct solver), `full "
@@ -104,7 +111,8 @@ namespace ltn
         "outer iterations instead of 23, at 1/2560 23 instead of 28; the "
         "3D bar at w/eps = 16 11 instead of 13); else 0, as for nonlocal "
         "diffusion, where it costs iterations (doc/discretization.md, "
-        "section 19). The weight used goes to `solver.control "
+        "'A coarse level for the controls'). The weight used goes to "
+        "`solver.control "
         "preconditioner` in summary.json.");
       prm.declare_entry(
         "Crack opening coarse fields",
@@ -115,7 +123,8 @@ namespace ltn
         "(n.x)(t.x)^2 about the crack's centre, n its normal and t each "
         "direction along it: an opening that varies along the crack, "
         "the slowest mode the polynomial fields leave in 2D "
-        "(doc/discretization.md, section 19). One nonlocal solve per field, "
+        "(doc/discretization.md, 'A coarse level for the controls'). One "
+        "nonlocal solve per field, "
         "once; on the cracked plate of benchmarks/speed_accuracy the outer "
         "iterations fall from 20 to 16 at spacing 1/1280, and the solve "
         "takes 17 % less time. `auto`: in 2D only (the 3D bars of "
@@ -137,8 +146,7 @@ namespace ltn
         "the solve's wall time.");
       prm.declare_entry("Model solvers",
                         "direct",
-                        Patterns::Selection("direct|preconditioned gmres|"
-                                            "preconditioned cg"),
+                        selection_pattern(model_solver_names()),
                         "How each model's equations are solved, inside the "
                         "reduced-space CG or alone: `direct` (sparse LU of "
                         "the assembled matrix), `preconditioned gmres` "
@@ -184,7 +192,7 @@ namespace ltn
   {
     prm.enter_subsection("Coupling");
     {
-      method                 = prm.get("Method");
+      method = parse_selection(coupling_method_names(), prm.get("Method"));
       tikhonov_parameter     = prm.get_double("Tikhonov parameter");
       relative_tolerance     = prm.get_double("Relative tolerance");
       max_iterations         = prm.get_integer("Maximum iterations");
@@ -238,15 +246,14 @@ namespace ltn
                   prm.get("Nonlocal control block"),
                   "`diagonal` with Coupling/Control preconditioner = none");
       check_input(control_preconditioner != "none" ||
-                    method != "full space gmres",
+                    method != CouplingMethod::full_space_gmres,
                   "Coupling/Control preconditioner",
                   control_preconditioner,
                   "`two level` or `block diagonal` with Coupling/Method = "
                   "full space gmres (its preconditioner eliminates the "
                   "controls with it)");
-      model_solvers.iterative = prm.get("Model solvers") != "direct";
-      model_solvers.conjugate_gradients =
-        prm.get("Model solvers") == "preconditioned cg";
+      model_solvers.kind =
+        parse_selection(model_solver_names(), prm.get("Model solvers"));
       model_solvers.relative_tolerance =
         prm.get_double("Model solver tolerance");
       model_solvers.direct_local_model =
@@ -257,7 +264,8 @@ namespace ltn
                   "Coupling/Model solver tolerance",
                   to_string(model_solvers.relative_tolerance),
                   "a tolerance in (0, 1)");
-      check_input(!time_standalone_solves || method == "reduced space cg",
+      check_input(!time_standalone_solves ||
+                    method == CouplingMethod::reduced_space_cg,
                   "Coupling/Time standalone solves",
                   "true",
                   "`false` unless Coupling/Method = reduced space cg (the "
@@ -278,15 +286,15 @@ namespace ltn
   {
     if (!matrix_free)
       return;
-    check_input(model_solvers.iterative,
+    check_input(model_solvers.iterative(),
                 "Coupling/Model solvers",
                 "direct",
                 "`preconditioned gmres` or `preconditioned cg` with "
                 "Nonlocal model/Operator = matrix-free (a direct solver "
                 "needs the assembled matrix)");
-    check_input(!coupled || method != "full space direct",
+    check_input(!coupled || method != CouplingMethod::full_space_direct,
                 "Coupling/Method",
-                method,
+                selection_name(coupling_method_names(), method),
                 "`reduced space cg` or `full space gmres` with Nonlocal "
                 "model/Operator = matrix-free (the full-space direct solver "
                 "needs the assembled matrix)");
@@ -320,30 +328,4 @@ namespace ltn
       level.controls.nonlocal_coarse_fields = crack_fields;
     return level;
   }
-
-
-
-  template <int dim>
-  CouplingSolution
-  CouplingParameters::solve(const CouplingSystem<dim> &system) const
-  {
-    if (method == "reduced space cg")
-      return solve_reduced_space_cg(system,
-                                    relative_tolerance,
-                                    max_iterations,
-                                    model_solvers,
-                                    controls,
-                                    time_standalone_solves);
-    if (method == "full space gmres")
-      return solve_full_space_gmres(
-        system, relative_tolerance, max_iterations, model_solvers, controls);
-    return solve_full_space_direct(system);
-  }
-
-  template CouplingSolution
-  CouplingParameters::solve(const CouplingSystem<1> &) const;
-  template CouplingSolution
-  CouplingParameters::solve(const CouplingSystem<2> &) const;
-  template CouplingSolution
-  CouplingParameters::solve(const CouplingSystem<3> &) const;
 } // namespace ltn

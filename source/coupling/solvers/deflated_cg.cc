@@ -2,7 +2,7 @@
 
 #include <deal.II/lac/lapack_templates.h>
 
-#include <ltn/coupling/deflated_cg.h>
+#include <ltn/coupling/solvers/deflated_cg.h>
 
 #include <algorithm>
 #include <utility>

@@ -1,8 +1,8 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
+#include <ltn/base/direct_solver.h>
 #include <ltn/base/matrix_rows.h>
-#include <ltn/coupling/direct_solver.h>
-#include <ltn/coupling/full_space_direct_solver.h>
+#include <ltn/coupling/solvers/full_space_direct_solver.h>
 
 #include <array>
 #include <memory>

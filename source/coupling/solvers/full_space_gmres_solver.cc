@@ -3,9 +3,9 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/solver_gmres.h>
 
-#include <ltn/coupling/full_space_gmres_solver.h>
-#include <ltn/coupling/kkt_preconditioner.h>
-#include <ltn/coupling/no_convergence.h>
+#include <ltn/base/no_convergence.h>
+#include <ltn/coupling/preconditioners/kkt_preconditioner.h>
+#include <ltn/coupling/solvers/full_space_gmres_solver.h>
 
 namespace ltn
 {

@@ -3,13 +3,13 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
-#include <ltn/coupling/control_coarse_space.h>
-#include <ltn/coupling/control_preconditioner.h>
-#include <ltn/coupling/deflated_cg.h>
-#include <ltn/coupling/model_solver.h>
-#include <ltn/coupling/no_convergence.h>
-#include <ltn/coupling/reduced_hessian.h>
-#include <ltn/coupling/reduced_space_solver.h>
+#include <ltn/base/no_convergence.h>
+#include <ltn/coupling/preconditioners/control_coarse_space.h>
+#include <ltn/coupling/preconditioners/control_preconditioner.h>
+#include <ltn/coupling/solvers/deflated_cg.h>
+#include <ltn/coupling/solvers/reduced_space_solver.h>
+#include <ltn/coupling/system/reduced_hessian.h>
+#include <ltn/model_solvers/model_solver.h>
 
 #include <Epetra_MultiVector.h>
 
@@ -51,7 +51,8 @@ namespace ltn
                          const ControlPreconditionerSettings &controls,
                          const bool time_standalone_solves)
   {
-    // Two levels (doc/discretization.md, section 19): deflation by the
+    // Two levels (doc/discretization.md, 'A coarse level for the
+    // controls'): deflation by the
     // nonlocal controls' polynomial fields and by every local control,
     // which makes the CG one on the nonlocal controls' Schur complement,
     // preconditioned by D_n; one level: P alone. E^{-1} amplifies the inner
@@ -109,7 +110,8 @@ namespace ltn
     if (rhs_norm > 0)
       {
         SolverControl control(max_iterations, relative_tolerance * rhs_norm);
-        // Relaxed inner solves (doc/discretization.md, section 19): the
+        // Relaxed inner solves (doc/discretization.md, 'A coarse level for
+        // the controls'): the
         // error of the Hessian's products may grow as the residual falls.
         const auto relax = [&](const double residual) {
           const double relaxed =
@@ -194,7 +196,7 @@ namespace ltn
                 // Each field's forward solve starts from the field itself
                 // at every particle: exact for rigid motions, and away from
                 // cracks for any linear field (doc/discretization.md,
-                // section 19).
+                // 'A coarse level for the controls').
                 for (auto &z :
                      polynomial_control_fields(hessian,
                                                *controls.coarse_degree,
@@ -216,7 +218,8 @@ namespace ltn
             // true residual and opening; 100 times looser, its true
             // residual grew 8 times. The local ones need more than the
             // inner tolerance: E's local block is H_ll, whose condition
-            // number grows like a power of 1/h (section 17), and E^{-1}
+            // number grows like a power of 1/h ('Preconditioning the
+            // reduced Hessian'), and E^{-1}
             // amplifies their errors. With local states to 1e-8 the 1e4
             // bar's CG stalled at 5e-4; local solves are cheap.
             const ModelSolver &nonlocal = *hessian.solvers[nonlocal_model];
@@ -256,7 +259,8 @@ namespace ltn
               &states,
               &ritz_values);
             end_phase("iterations");
-            // What bounds the iterations (section 19): on the cracked plate
+            // What bounds the iterations ('A coarse level for the controls'):
+            // on the cracked plate
             // an isolated smallest value, and a largest that grows like the
             // overlap's width over the horizon.
             const std::vector<double> ritz = ritz_values.values();
@@ -288,7 +292,8 @@ namespace ltn
     end_phase("final solves");
     // The CG's residual is its recursion's; the relaxed products let the
     // true one, H theta - b = the gradient at the final controls, drift
-    // from it (doc/discretization.md, section 19, "The true residual").
+    // from it (doc/discretization.md, 'A coarse level for the controls',
+    // "The true residual").
     // Its adjoint solves cost a few CG iterations.
     if (rhs_norm > 0)
       {

@@ -2,7 +2,7 @@
 
 #include <deal.II/lac/tridiagonal_matrix.h>
 
-#include <ltn/coupling/ritz_values.h>
+#include <ltn/coupling/solvers/ritz_values.h>
 
 #include <algorithm>
 #include <cmath>

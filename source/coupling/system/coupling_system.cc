@@ -1,7 +1,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 
-#include <ltn/coupling/coupling_system.h>
+#include <ltn/coupling/system/coupling_system.h>
 
 #include <map>
 

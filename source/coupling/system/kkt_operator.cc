@@ -1,4 +1,4 @@
-#include <ltn/coupling/kkt_operator.h>
+#include <ltn/coupling/system/kkt_operator.h>
 
 #include <cmath>
 

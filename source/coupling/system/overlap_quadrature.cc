@@ -5,7 +5,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 
-#include <ltn/coupling/overlap_quadrature.h>
+#include <ltn/coupling/system/overlap_quadrature.h>
 
 #include <algorithm>
 

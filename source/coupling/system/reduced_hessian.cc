@@ -1,4 +1,4 @@
-#include <ltn/coupling/reduced_hessian.h>
+#include <ltn/coupling/system/reduced_hessian.h>
 
 namespace ltn
 {

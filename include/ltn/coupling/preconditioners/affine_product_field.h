@@ -11,7 +11,7 @@ namespace ltn
    * product of affine functions of the position `x` (dim-agnostic: the
    * entries beyond dim are ignored). The reduced-space CG adds such fields
    * to its coarse level beside the monomials (doc/discretization.md,
-   * section 19, "Crack opening fields").
+   * 'A coarse level for the controls', "Crack opening fields").
    */
   struct AffineProductField
   {

@@ -3,8 +3,8 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
-#include <ltn/coupling/affine_product_field.h>
-#include <ltn/coupling/reduced_hessian.h>
+#include <ltn/coupling/preconditioners/affine_product_field.h>
+#include <ltn/coupling/system/reduced_hessian.h>
 
 #include <functional>
 #include <vector>
@@ -15,7 +15,8 @@ namespace ltn
 
   /**
    * The coarse level of the two-level preconditioner of the reduced Hessian
-   * `H` (doc/discretization.md, section 19): for orthonormal columns `Z`,
+   * `H` (doc/discretization.md, 'A coarse level for the controls'): for
+   * orthonormal columns `Z`,
    * `H Z` is computed once (one product per column), and `E = Z^T H Z` is
    * factored by Cholesky and replicated on every rank. balance() applies
    * the balancing preconditioner

@@ -3,10 +3,10 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
-#include <ltn/coupling/affine_product_field.h>
-#include <ltn/coupling/control_coarse_space.h>
-#include <ltn/coupling/reduced_hessian.h>
-#include <ltn/coupling/surrogate_hessian_block.h>
+#include <ltn/coupling/preconditioners/affine_product_field.h>
+#include <ltn/coupling/preconditioners/control_coarse_space.h>
+#include <ltn/coupling/preconditioners/surrogate_hessian_block.h>
+#include <ltn/coupling/system/reduced_hessian.h>
 
 #include <memory>
 #include <optional>
@@ -45,7 +45,7 @@ namespace ltn
 
   /**
    * A block-diagonal preconditioner for the reduced Hessian
-   * (doc/discretization.md, section 17):
+   * (doc/discretization.md, 'Preconditioning the reduced Hessian'):
    *
    *   P = diag(D_n + alpha I, H_ll),
    *
@@ -66,11 +66,12 @@ namespace ltn
    *   observes over its width `w`: the condition number of
    *   `D_n^{-1} H_nn` grows like `w / eps`. With `surrogate_nonlocal_block`
    *   the block is instead the SurrogateHessianBlock, which models that
-   *   part and is inverted exactly (doc/discretization.md, section 20).
+   *   part and is inverted exactly (doc/discretization.md, 'A surrogate
+   *   model of the nonlocal control block').
    *   With a `collar_layer_weight` `s > 0`, `D_n` is scaled by
    *   `1 + s c_i / max_j c_j` on the collar layer whose bonds reach into
-   *   `Omega_n`, where the top modes of `D_n^{-1} H_nn` live (section 19,
-   *   "The collar layer's weight").
+   *   `Omega_n`, where the top modes of `D_n^{-1} H_nn` live ('A coarse
+   *   level for the controls', "The collar layer's weight").
    */
   template <int dim>
   class ControlPreconditioner

@@ -1,8 +1,8 @@
 #pragma once
 
-#include <ltn/coupling/control_preconditioner.h>
-#include <ltn/coupling/kkt_operator.h>
-#include <ltn/coupling/model_solver.h>
+#include <ltn/coupling/preconditioners/control_preconditioner.h>
+#include <ltn/coupling/system/kkt_operator.h>
+#include <ltn/model_solvers/model_solver.h>
 
 #include <array>
 
@@ -12,7 +12,8 @@ namespace ltn
 
   /**
    * An approximate inverse of the KktOperator: block elimination in the
-   * order of the reduced space (doc/discretization.md, section 18), with
+   * order of the reduced space (doc/discretization.md, 'The full-space
+   * system without a matrix'), with
    * each model's inverses replaced by its solver @p solvers (typically
    * GMRES to a loose tolerance) and the reduced Hessian's by the
    * ControlPreconditioner @p controls. For `[f; s g]` (the multipliers'

@@ -5,9 +5,9 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <ltn/base/direct_solver.h>
 #include <ltn/base/discrete_model.h>
-#include <ltn/coupling/direct_solver.h>
-#include <ltn/coupling/model_solver.h>
+#include <ltn/model_solvers/model_solver.h>
 
 #include <memory>
 #include <vector>
@@ -18,7 +18,8 @@ namespace ltn
 
   /**
    * A model of the nonlocal controls' block of the reduced Hessian, and its
-   * inverse (doc/discretization.md, section 20). With the nonlocal model's
+   * inverse (doc/discretization.md, 'A surrogate model of the nonlocal
+   * control block'). With the nonlocal model's
    * free (f) and control (c) unknowns, its field for controls `y` is `y` on
    * the collar and `G y = -(A^ff)^{-1} A^fc y` in `Omega_n`; the particle
    * quadrature observes each particle alone, so

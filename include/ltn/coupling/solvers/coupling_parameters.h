@@ -2,9 +2,10 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <ltn/coupling/control_preconditioner.h>
-#include <ltn/coupling/coupling_system.h>
-#include <ltn/coupling/model_solver.h>
+#include <ltn/base/selection.h>
+#include <ltn/coupling/preconditioners/control_preconditioner.h>
+#include <ltn/coupling/system/coupling_system.h>
+#include <ltn/model_solvers/model_solver.h>
 
 #include <optional>
 #include <string>
@@ -13,6 +14,21 @@
 namespace ltn
 {
   using namespace dealii;
+
+  /** How the optimality system is solved (`Coupling/Method`). */
+  enum class CouplingMethod
+  {
+    /** States, controls and multipliers in one factorized system. */
+    full_space_direct,
+    /** The same system unassembled: flexible GMRES, block elimination. */
+    full_space_gmres,
+    /** CG on the controls, each model solved by its own solver. */
+    reduced_space_cg
+  };
+
+  /** The names of the methods in `Coupling/Method`. */
+  const SelectionNames<CouplingMethod> &
+  coupling_method_names();
 
   /**
    * How the optimality system is solved (subsection `Coupling`), and its
@@ -40,11 +56,6 @@ namespace ltn
                  const std::vector<AffineProductField> &crack_fields = {},
                  const unsigned int                     dim          = 2) const;
 
-    /** Solve @p system with the selected method. */
-    template <int dim>
-    CouplingSolution
-    solve(const CouplingSystem<dim> &system) const;
-
     /**
      * Check that the selected solvers can work with a nonlocal model stored
      * matrix-free (@p matrix_free), coupled to a local one or alone
@@ -53,7 +64,7 @@ namespace ltn
     void
     check_operator(const bool matrix_free, const bool coupled) const;
 
-    std::string         method = "full space direct";
+    CouplingMethod      method = CouplingMethod::full_space_direct;
     ModelSolverSettings model_solvers;
     double              tikhonov_parameter = 0;
     double              relative_tolerance = 1e-12;

@@ -7,7 +7,7 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/vector.h>
 
-#include <ltn/coupling/ritz_values.h>
+#include <ltn/coupling/solvers/ritz_values.h>
 
 #include <array>
 #include <functional>
@@ -20,7 +20,8 @@ namespace ltn
   /**
    * Normal equations `(F^T W F + alpha I) x = b` with `F = B V` for the
    * controls `x = [x_0; x_1]` of two models, as the reduced space has them
-   * (doc/discretization.md, sections 10 and 19): @p forward maps model k's
+   * (doc/discretization.md, 'The reduced space' and 'A coarse level for
+   * the controls'): @p forward maps model k's
    * controls to its state (`V_k`, a forward solve, from an initial guess of
    * the state if one is given, else from the solver's own), @p observe takes
    * both states to an observation (`B`, the overlap mismatch at this rank's
@@ -81,7 +82,8 @@ namespace ltn
 
   /**
    * The coarse space of a deflated CG on NormalEquations
-   * (doc/discretization.md, section 19): columns `Z`, each in the controls
+   * (doc/discretization.md, 'A coarse level for the controls'): columns
+   * `Z`, each in the controls
    * of one model k and kept only there, their states `V_k z` (one forward
    * solve each, no adjoint solve), and the Cholesky factor of
    * `E = Z^T A Z = (B V Z)^T W (B V Z) + alpha Z^T Z`, replicated on every

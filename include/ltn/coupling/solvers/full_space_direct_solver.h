@@ -1,6 +1,6 @@
 #pragma once
 
-#include <ltn/coupling/coupling_system.h>
+#include <ltn/coupling/system/coupling_system.h>
 
 namespace ltn
 {

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <ltn/coupling/control_preconditioner.h>
-#include <ltn/coupling/coupling_system.h>
+#include <ltn/coupling/preconditioners/control_preconditioner.h>
+#include <ltn/coupling/system/coupling_system.h>
 
 
 namespace ltn
@@ -10,7 +10,8 @@ namespace ltn
    * Solve the full-space optimality system of solve_full_space_direct()
    * without assembling it: flexible GMRES on the KktOperator, right
    * preconditioned by the KktPreconditioner (doc/discretization.md,
-   * section 18), whose model solves are as @p model_solvers say (for
+   * 'The full-space system without a matrix'), whose model solves are as
+   * @p model_solvers say (for
    * iterative ones, GMRES or CG to `model_solvers.relative_tolerance`) and
    * whose reduced Hessian is approximated by the ControlPreconditioner (its
    * local block and coarse products built with tight solves; as

@@ -1,7 +1,7 @@
 #pragma once
 
-#include <ltn/coupling/control_preconditioner.h>
-#include <ltn/coupling/coupling_system.h>
+#include <ltn/coupling/preconditioners/control_preconditioner.h>
+#include <ltn/coupling/system/coupling_system.h>
 
 namespace ltn
 {
@@ -17,7 +17,8 @@ namespace ltn
    * costs one forward and one adjoint solve per model. The iteration stops
    * when the residual has dropped by @p relative_tolerance. The models'
    * solvers are as @p model_solvers say, their tolerance relaxed as the
-   * residual falls (doc/discretization.md, section 19). CG is preconditioned
+   * residual falls (doc/discretization.md, 'A coarse level for the
+   * controls'). CG is preconditioned
    * by the block-diagonal ControlPreconditioner and, with a coarse degree in
    * @p controls, deflated by the polynomial control fields (DeflationSpace:
    * one forward solve per coarse column, no adjoint solve). The final fields

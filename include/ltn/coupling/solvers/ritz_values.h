@@ -6,7 +6,8 @@ namespace ltn
 {
   /**
    * The Ritz values of a preconditioned CG (doc/discretization.md,
-   * section 19, "What bounds the outer iterations"): from its step lengths
+   * 'A coarse level for the controls', "What bounds the outer
+   * iterations"): from its step lengths
    * `a_j` and direction coefficients `b_j` (`p_{j+1} = z_{j+1} + b_j p_j`),
    * the eigenvalues of Lanczos's tridiagonal matrix
    *

@@ -6,8 +6,8 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
-#include <ltn/coupling/model_solver.h>
-#include <ltn/coupling/overlap_quadrature.h>
+#include <ltn/coupling/system/overlap_quadrature.h>
+#include <ltn/model_solvers/model_solver.h>
 
 #include <array>
 #include <functional>

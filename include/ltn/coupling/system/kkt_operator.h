@@ -2,7 +2,7 @@
 
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
-#include <ltn/coupling/coupling_system.h>
+#include <ltn/coupling/system/coupling_system.h>
 
 namespace ltn
 {
@@ -10,7 +10,8 @@ namespace ltn
 
   /**
    * The full-space optimality system of solve_full_space_direct() as an
-   * operator, without assembling it (doc/discretization.md, section 18):
+   * operator, without assembling it (doc/discretization.md, 'The
+   * full-space system without a matrix'):
    *
    *   [ B^T W B + alpha R   s M^T Z       ] [ x  ]   [ 0   ]
    *   [ s Z M               s^2 (I - Z)   ] [ mu ] = [ s r ],

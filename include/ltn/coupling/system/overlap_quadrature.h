@@ -8,7 +8,7 @@
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
 #include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/nonlocal/particle_elasticity.h>
-#include <ltn/scene/geometry.h>
+#include <ltn/problem/geometry.h>
 
 #include <utility>
 #include <vector>

@@ -2,8 +2,8 @@
 
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
-#include <ltn/coupling/coupling_system.h>
-#include <ltn/coupling/model_solver.h>
+#include <ltn/coupling/system/coupling_system.h>
+#include <ltn/model_solvers/model_solver.h>
 
 #include <array>
 #include <vector>
@@ -15,7 +15,8 @@ namespace ltn
   /**
    * The reduced Hessian `V^T B^T W B V + alpha I` of the optimality system as
    * an operator on the controls `theta = [theta_n; theta_l]`, one block per
-   * model (doc/discretization.md, section 17): `V` maps the controls to the
+   * model (doc/discretization.md, 'Preconditioning the reduced Hessian'):
+   * `V` maps the controls to the
    * states through each model's own solver, `B = [E, -P]` takes the states
    * to the overlap mismatch.
    */
