@@ -23,7 +23,7 @@ namespace
   const char *usage =
     "usage: ltn SCENE.prm [--set \"Subsection/.../name=value\"]... "
     "[--output-dir DIR]\n"
-    "       ltn --print-parameters\n";
+    "       ltn --print-parameters [--json]\n";
 
   /**
    * A failed check (deal.II's AssertThrow, in deal.II or in LtN) for a
@@ -62,6 +62,11 @@ namespace
     std::vector<std::string> sets;
     std::string              output_directory;
     bool                     print_parameters = false;
+    /**
+     * With --print-parameters: deal.II's JSON form, which also gives each
+     * parameter's pattern (doc/prm_guide.md's table is made from it).
+     */
+    bool json = false;
   };
 
   CommandLine
@@ -80,6 +85,8 @@ namespace
         };
         if (argument == "--print-parameters")
           command_line.print_parameters = true;
+        else if (argument == "--json")
+          command_line.json = true;
         else if (argument == "--set")
           command_line.sets.push_back(next());
         else if (argument == "--output-dir")
@@ -102,6 +109,10 @@ namespace
                      "command line",
                      "",
                      std::string("a scene file\n") + usage);
+    ltn::check_input(!command_line.json || command_line.print_parameters,
+                     "--json",
+                     "",
+                     "--json only with --print-parameters");
     return command_line;
   }
   /**
@@ -182,7 +193,9 @@ main(int argc, char **argv)
       if (command_line.print_parameters)
         {
           if (root)
-            prm.print_parameters(std::cout, ParameterHandler::PRM);
+            prm.print_parameters(std::cout,
+                                 command_line.json ? ParameterHandler::JSON :
+                                                     ParameterHandler::PRM);
           return 0;
         }
 

@@ -50,14 +50,18 @@ namespace ltn
                         "must divide its extents; it need not line up with "
                         "the finite element mesh.");
       prm.declare_entry("Operator",
-                        "assembled",
-                        Patterns::Selection("assembled|matrix-free"),
+                        "auto",
+                        selection_pattern(operator_storage_names()),
                         "How the particle operator (2D, 3D) is stored: "
                         "`assembled` (a sparse matrix; needed by the direct "
-                        "solvers) or `matrix-free` (one stencil shared by the "
+                        "solvers), `matrix-free` (one stencil shared by the "
                         "particles away from collar and cracks, rows stored "
                         "only for the others; needs Coupling/Model solvers = "
-                        "preconditioned gmres or preconditioned cg).");
+                        "preconditioned gmres or preconditioned cg), or "
+                        "`auto`: assembled below 50,000 particle unknowns "
+                        "and in 1D, matrix-free from there on unless the "
+                        "scene names direct solvers (the choice is printed; "
+                        "doc/prm_guide.md, 'Large scenes').");
       prm.declare_entry("Finite element degree",
                         "1",
                         Patterns::Integer(1, 2),
@@ -80,7 +84,8 @@ namespace ltn
       horizon_ratio    = prm.get_double("Horizon to mesh size ratio");
       degree           = prm.get_integer("Finite element degree");
       spacing_ratio    = prm.get_double("Particle spacing to mesh size ratio");
-      matrix_free      = prm.get("Operator") == "matrix-free";
+      operator_storage =
+        parse_selection(operator_storage_names(), prm.get("Operator"));
       check_input(spacing_ratio > 0,
                   "Nonlocal model/Particle spacing to mesh size ratio",
                   to_string(spacing_ratio),

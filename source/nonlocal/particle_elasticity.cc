@@ -51,7 +51,7 @@ namespace ltn
         if (!near_crack(lattice.position(index)))
           continue;
         // A bond is not intact when it is cut or reaches no particle.
-        intact_bonds(index, intact);
+        const double m = intact_bonds(index, intact);
         for (std::size_t k = 0; k < intact.size() && !has_cut_bond[n]; ++k)
           {
             LatticeIndex neighbour = index;
@@ -60,6 +60,8 @@ namespace ltn
             has_cut_bond[n] = !intact[k] && lattice.number(neighbour) !=
                                               ParticleLattice<dim>::invalid;
           }
+        if (has_cut_bond[n])
+          cut_weighted_volume[n] = m;
       }
 
     // The dilatation is an unknown only where its sum is complete.
@@ -244,7 +246,7 @@ namespace ltn
     if (!free_u && fixed_theta)
       return;
 
-    std::vector<bool> intact, neighbour_intact;
+    std::vector<bool> intact;
     const double      m_i = intact_bonds(index, intact);
     if (!fixed_theta)
       rows[dim].emplace_back(dof(n, dim), theta_scale);
@@ -267,9 +269,8 @@ namespace ltn
             continue;
           // Neighbours of a particle of Omega_n are complete: without a
           // cut bond their weighted volume is the stencil's.
-          const double m_j = has_cut_bond[j] ?
-                               intact_bonds(neighbour, neighbour_intact) :
-                               stencil.weighted_volume();
+          const double m_j = has_cut_bond[j] ? cut_weighted_volume.at(j) :
+                                               stencil.weighted_volume();
           const double bond_stiffness =
             weights[k] * coefficient_B * (1 / m_i + 1 / m_j) / xi.norm_square();
           for (unsigned int a = 0; a < dim; ++a)

@@ -83,14 +83,15 @@ namespace ltn
       }
 
       void
-      assemble(Nonlocal &nonlocal) const
+      assemble(Nonlocal                   &nonlocal,
+               [[maybe_unused]] const bool matrix_free) const
       {
         if constexpr (dim == 1)
           nonlocal.assemble(*data.nonlocal_rhs, *data.volume_constraint_data);
         else
           nonlocal.assemble(*data.nonlocal_rhs,
                             *data.volume_constraint_data,
-                            nonlocal_parameters.matrix_free);
+                            matrix_free);
       }
 
       void
@@ -175,7 +176,8 @@ namespace ltn
   {
     Assert(prm.get_integer("Dimension") == dim, ExcInternalError());
     this->parse_parameters(prm, [&] { problem_data.parse_parameters(prm); });
-    check_input(dim > 1 || !nonlocal_parameters.matrix_free,
+    check_input(dim > 1 || nonlocal_parameters.operator_storage !=
+                             OperatorStorage::matrix_free,
                 "Nonlocal model/Operator",
                 "matrix-free",
                 "`assembled` in 1D (its nonlocal model is a finite element "
@@ -192,7 +194,8 @@ namespace ltn
                 "surrogate extension",
                 "`diagonal` in 1D (the surrogate lives on the particle "
                 "lattice of 2D and 3D models)");
-    coupling_parameters.check_operator(nonlocal_parameters.matrix_free,
+    coupling_parameters.check_operator(nonlocal_parameters.operator_storage ==
+                                         OperatorStorage::matrix_free,
                                        geometry.has_local_model() &&
                                          geometry.has_nonlocal_model());
     check_input(local_parameters.dirichlet_components.empty(),

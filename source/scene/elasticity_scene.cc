@@ -209,11 +209,11 @@ namespace ltn
       }
 
       void
-      assemble(Nonlocal &nonlocal) const
+      assemble(Nonlocal &nonlocal, const bool matrix_free) const
       {
         nonlocal.assemble(*f.body_force,
                           *f.volume_constraint_data,
-                          nonlocal_parameters.matrix_free);
+                          matrix_free);
       }
 
       void
@@ -364,7 +364,8 @@ namespace ltn
       crack_set.parse_parameters(prm);
       data.parse_parameters(prm);
     });
-    coupling_parameters.check_operator(nonlocal_parameters.matrix_free,
+    coupling_parameters.check_operator(nonlocal_parameters.operator_storage ==
+                                         OperatorStorage::matrix_free,
                                        geometry.has_local_model() &&
                                          geometry.has_nonlocal_model());
     prm.enter_subsection("Postprocess");

@@ -14,7 +14,8 @@ namespace ltn
               const DiscreteModel          *local,
               const OverlapQuadrature<dim> &overlap,
               const CouplingParameters     &parameters,
-              LevelRecord                  &record)
+              LevelRecord                  &record,
+              Progress                     &progress)
   {
     // Are all entries of these vectors finite, on every rank?
     const auto all_finite =
@@ -43,7 +44,7 @@ namespace ltn
                                          *local,
                                          overlap,
                                          parameters.tikhonov_parameter);
-        solution          = solve_optimality_system(system, parameters);
+        solution = solve_optimality_system(system, parameters, progress);
         record.n_controls = system.n_controls();
         record.solver_method =
           selection_name(coupling_method_names(), parameters.method);
@@ -190,17 +191,20 @@ namespace ltn
               const DiscreteModel *,
               const OverlapQuadrature<1> &,
               const CouplingParameters &,
-              LevelRecord &);
+              LevelRecord &,
+              Progress &);
   template CouplingSolution
   solve_level(const DiscreteModel *,
               const DiscreteModel *,
               const OverlapQuadrature<2> &,
               const CouplingParameters &,
-              LevelRecord &);
+              LevelRecord &,
+              Progress &);
   template CouplingSolution
   solve_level(const DiscreteModel *,
               const DiscreteModel *,
               const OverlapQuadrature<3> &,
               const CouplingParameters &,
-              LevelRecord &);
+              LevelRecord &,
+              Progress &);
 } // namespace ltn

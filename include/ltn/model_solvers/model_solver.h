@@ -22,6 +22,8 @@ namespace ltn
   /** The solver of a model's equations (`Coupling/Model solvers`). */
   enum class ModelSolverKind
   {
+    /** Chosen per level by choose_solvers() (scene/solver_choice.h). */
+    automatic,
     /** A sparse direct solver (MUMPS), which needs the assembled matrix. */
     direct,
     /**
@@ -42,6 +44,7 @@ namespace ltn
   model_solver_names()
   {
     static const SelectionNames<ModelSolverKind> names = {
+      {ModelSolverKind::automatic, "auto"},
       {ModelSolverKind::direct, "direct"},
       {ModelSolverKind::preconditioned_gmres, "preconditioned gmres"},
       {ModelSolverKind::preconditioned_cg, "preconditioned cg"}};
@@ -53,11 +56,12 @@ namespace ltn
   {
     ModelSolverKind kind = ModelSolverKind::direct;
 
-    /** Does the model solve by a Krylov method (any but `direct`)? */
+    /** Does the model solve by a Krylov method (set, and not `direct`)? */
     bool
     iterative() const
     {
-      return kind != ModelSolverKind::direct;
+      return kind == ModelSolverKind::preconditioned_gmres ||
+             kind == ModelSolverKind::preconditioned_cg;
     }
     /**
      * The residual reduction relative to the right-hand side of the free

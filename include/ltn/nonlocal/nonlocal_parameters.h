@@ -11,6 +11,31 @@ namespace ltn
 {
   using namespace dealii;
 
+  /** How a particle operator is stored (`Nonlocal model/Operator`). */
+  enum class OperatorStorage
+  {
+    /** Chosen per level by choose_solvers() (scene/solver_choice.h). */
+    automatic,
+    /** A sparse matrix, which the direct solvers need. */
+    assembled,
+    /**
+     * One stencil shared by the particles away from collar and cracks,
+     * rows stored only for the others (LatticeOperator).
+     */
+    matrix_free
+  };
+
+  /** The names of the storages in `Nonlocal model/Operator`. */
+  inline const SelectionNames<OperatorStorage> &
+  operator_storage_names()
+  {
+    static const SelectionNames<OperatorStorage> names = {
+      {OperatorStorage::automatic, "auto"},
+      {OperatorStorage::assembled, "assembled"},
+      {OperatorStorage::matrix_free, "matrix-free"}};
+    return names;
+  }
+
   /**
    * The parameters of the nonlocal model (subsection `Nonlocal model`): its
    * kernel, its horizon (fixed, or a multiple of the mesh size for studies
@@ -72,7 +97,7 @@ namespace ltn
     double       horizon_ratio    = 0;
     unsigned int degree           = 1;
     double       spacing_ratio    = 1;
-    /** Apply the particle operator without assembling it. */
-    bool matrix_free = false;
+    /** How the particle operator is stored (`Operator`). */
+    OperatorStorage operator_storage = OperatorStorage::automatic;
   };
 } // namespace ltn

@@ -14,6 +14,7 @@
 #include <ltn/problem/crack.h>
 #include <ltn/problem/geometry.h>
 
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -173,5 +174,11 @@ namespace ltn
     std::vector<Box<dim>> crack_neighbourhoods;
     /** Per particle of the lattice: is one of its bonds cut? */
     std::vector<bool> has_cut_bond;
+    /**
+     * The weighted volume of each particle with a cut bond, found with its
+     * bonds once: a row reads those of all its partners, and finding them
+     * anew took the square of the bonds per row near a crack.
+     */
+    std::map<types::global_dof_index, double> cut_weighted_volume;
   };
 } // namespace ltn

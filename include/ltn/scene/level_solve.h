@@ -6,6 +6,7 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <ltn/base/discrete_model.h>
+#include <ltn/base/progress.h>
 #include <ltn/coupling/solvers/coupling_parameters.h>
 #include <ltn/coupling/system/coupling_system.h>
 #include <ltn/coupling/system/overlap_quadrature.h>
@@ -24,7 +25,8 @@ namespace ltn
    * optimality system on @p overlap when both exist (@p nonlocal and
    * @p local not null), else the one model alone by its direct solver.
    * Record the solver's statistics (controls, method, iterations, residual,
-   * mismatch) in @p record; throw if the solution is not finite.
+   * mismatch) in @p record; throw if the solution is not finite. The coupled
+   * solve reports its progress to @p progress.
    */
   template <int dim>
   CouplingSolution
@@ -32,7 +34,8 @@ namespace ltn
               const DiscreteModel          *local,
               const OverlapQuadrature<dim> &overlap,
               const CouplingParameters     &parameters,
-              LevelRecord                  &record);
+              LevelRecord                  &record,
+              Progress                     &progress);
 
   /**
    * Record the errors of a level against @p exact: the nonlocal model's

@@ -3,6 +3,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <ltn/base/progress.h>
 #include <ltn/coupling/solvers/coupling_parameters.h>
 #include <ltn/coupling/system/coupling_system.h>
 #include <ltn/local/local_parameters.h>
@@ -141,13 +142,15 @@ namespace ltn
      * adaptive cycle of the local mesh: one LevelRecord per cycle in
      * @p summary, one solution per cycle in `solutions`, VTU files into
      * @p output_directory (if not empty and `Output/Write VTU`), the progress
-     * line to @p out. The physics supplies, as `Physics`:
+     * line to @p out. Its phases, once the run is long, go to @p progress. The physics supplies, as `Physics`:
      *
      * - the types `Nonlocal` and `Local` of its models;
      * - `h`, `eps` (the horizon), `collar_depth` (how far out of `Omega_n`
      *   its particles read: one horizon for diffusion, two for LPS);
-     * - `make_nonlocal()`, `make_local()`, and `assemble()` of each model;
-     * - `coupling()`: the coupling parameters of the level;
+     * - `make_nonlocal()`, `make_local()`, and `assemble()` of each model
+     *   (of the nonlocal one with the operator matrix-free or not);
+     * - `coupling()`: the coupling parameters of the level, whose `auto`
+     *   choices run_level() resolves (choose_solvers());
      * - `exact_solution()`: the exact solution, or null;
      * - `n_particles(nonlocal)`;
      * - `postprocess(nonlocal, local, solution, local_field, record)`: its
@@ -165,6 +168,7 @@ namespace ltn
               const std::string  &output_directory,
               RunSummary         &summary,
               WrittenFiles       &files,
-              ConditionalOStream &out);
+              ConditionalOStream &out,
+              Progress           &progress);
   };
 } // namespace ltn

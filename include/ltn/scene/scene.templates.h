@@ -12,6 +12,7 @@
 #include <ltn/output/nonlocal_output.h>
 #include <ltn/scene/level_solve.h>
 #include <ltn/scene/scene.h>
+#include <ltn/scene/solver_choice.h>
 
 #include <iomanip>
 #include <memory>
@@ -61,13 +62,15 @@ namespace ltn
     summary.dim   = dim;
     summary.model = model;
     WrittenFiles files;
+    Progress     progress(out);
     for (unsigned int level = 0; level < discretization.n_levels; ++level)
       run_level(physics_of_level(discretization.mesh_size(level)),
                 level,
                 output_directory,
                 summary,
                 files,
-                out);
+                out,
+                progress);
     summary.total_time = total_timer.wall_time();
     return summary;
   }
@@ -82,7 +85,8 @@ namespace ltn
                         const std::string  &output_directory,
                         RunSummary         &summary,
                         WrittenFiles       &files,
-                        ConditionalOStream &out)
+                        ConditionalOStream &out,
+                        Progress           &progress)
   {
     const double h = physics.h, eps = physics.eps;
     // The models of the scene: both, or one on the whole body. The local
@@ -90,18 +94,25 @@ namespace ltn
     std::unique_ptr<typename Physics::Nonlocal> nonlocal;
     std::unique_ptr<typename Physics::Local>    local;
     CouplingSolution                            solution;
+    SolverChoice                                choice;
     const unsigned int                          cycles =
       geometry.has_local_model() ? local_parameters.adaptive_cycles : 0;
     for (unsigned int cycle = 0; cycle <= cycles; ++cycle)
       {
         ConditionalOStream silent(out.get_stream(), false);
         TimerOutput timer(silent, TimerOutput::never, TimerOutput::wall_times);
+        // Each phase of the level announced, once the run is long.
+        const auto enter = [&](const std::string &phase) {
+          progress.report(
+            [&] { return "level " + std::to_string(level) + ": " + phase; });
+          timer.enter_subsection(phase);
+        };
         LevelRecord record;
         record.h       = h;
         record.horizon = eps;
         record.cycle   = cycle;
 
-        timer.enter_subsection("setup meshes");
+        enter("setup meshes");
         if (cycle == 0)
           {
             if (geometry.has_nonlocal_model())
@@ -128,15 +139,27 @@ namespace ltn
           }
         timer.leave_subsection();
 
+        if (cycle == 0)
+          {
+            choice =
+              choose_solvers(physics.coupling(),
+                             nonlocal_parameters.operator_storage,
+                             nonlocal ? nonlocal->get_model().owned.size() : 0,
+                             dim,
+                             nonlocal && local);
+            if (!choice.description.empty())
+              out << "level " << level << ": " << choice.description
+                  << std::endl;
+          }
         if (nonlocal && cycle == 0)
           {
-            timer.enter_subsection("assemble nonlocal");
-            physics.assemble(*nonlocal);
+            enter("assemble nonlocal");
+            physics.assemble(*nonlocal, choice.matrix_free);
             timer.leave_subsection();
           }
         if (local)
           {
-            timer.enter_subsection("assemble local");
+            enter("assemble local");
             physics.assemble(*local);
             timer.leave_subsection();
           }
@@ -144,30 +167,31 @@ namespace ltn
         OverlapQuadrature<dim> overlap;
         if (nonlocal && local)
           {
-            timer.enter_subsection("assemble coupling");
+            enter("assemble coupling");
             overlap = create_overlap_quadrature(geometry,
                                                 eps,
                                                 *nonlocal,
                                                 local->get_dof_handler());
             timer.leave_subsection();
           }
-        const CouplingParameters coupling = physics.coupling();
+        const CouplingParameters &coupling = choice.coupling;
         if (dim > 1 && nonlocal && cycle == 0)
           note_large_factorized_particle_model(
             nonlocal->get_model().owned.size(),
             local != nullptr,
             coupling,
             out);
-        timer.enter_subsection("solve");
+        enter("solve");
         solution = solve_level(nonlocal ? &nonlocal->get_model() : nullptr,
                                local ? &local->get_model() : nullptr,
                                overlap,
                                coupling,
-                               record);
+                               record,
+                               progress);
         timer.leave_subsection();
         solutions.push_back(solution);
 
-        timer.enter_subsection("postprocess");
+        enter("postprocess");
         record.n_nonlocal_dofs =
           nonlocal ? nonlocal->get_model().owned.size() : 0;
         record.n_local_dofs = local ? local->get_dof_handler().n_dofs() : 0;
@@ -196,7 +220,7 @@ namespace ltn
 
         if (!output_directory.empty() && write_vtu)
           {
-            timer.enter_subsection("output");
+            enter("output");
             // One file per solve: level, or level and adaptive cycle.
             const unsigned int step = summary.levels.size();
             const std::string  suffix =

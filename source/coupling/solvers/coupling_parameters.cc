@@ -10,6 +10,7 @@ namespace ltn
   coupling_method_names()
   {
     static const SelectionNames<CouplingMethod> names = {
+      {CouplingMethod::automatic, "auto"},
       {CouplingMethod::full_space_direct, "full space direct"},
       {CouplingMethod::full_space_gmres, "full space gmres"},
       {CouplingMethod::reduced_space_cg, "reduced space cg"}};
@@ -23,19 +24,25 @@ namespace ltn
   {
     prm.enter_subsection("Coupling");
     {
-      prm.declare_entry("Method",
-                        "full space direct",
-                        selection_pattern(coupling_method_names()),
-                        "How to solve the optimality system: `full space "
-                        "direct` (states, controls and multipliers in one "
-                        "saddle-point system, sparse direct solver), `full "
-                        "space gmres` (the same system unassembled, flexible "
-                        "GMRES preconditioned by block elimination with "
-                        "each model's solver, two forward and two adjoint "
-                        "solves per model and iteration; set a loose Model "
-                        "solver tolerance such as 1e-3) or `reduced space "
-                        "cg` (CG on the controls; each iteration one forward "
-                        "and one adjoint solve per model).");
+      prm.declare_entry(
+        "Method",
+        "auto",
+        selection_pattern(coupling_method_names()),
+        "How to solve the optimality system: `full space "
+        "direct` (states, controls and multipliers in one "
+        "saddle-point system, sparse direct solver), `full "
+        "space gmres` (the same system unassembled, flexible "
+        "GMRES preconditioned by block elimination with "
+        "each model's solver, two forward and two adjoint "
+        "solves per model and iteration; set a loose Model "
+        "solver tolerance such as 1e-3) or `reduced space "
+        "cg` (CG on the controls; each iteration one forward "
+        "and one adjoint solve per model), or `auto`: reduced space cg "
+        "where the particle model is solved iteratively "
+        "(Model solvers `auto` from 50,000 particle unknowns "
+        "on, or named), where its operator is matrix-free, "
+        "or with Time standalone solves; full space direct "
+        "otherwise (doc/prm_guide.md, 'Large scenes').");
       prm.declare_entry("Tikhonov parameter",
                         "0",
                         Patterns::Double(0),
@@ -93,9 +100,10 @@ namespace ltn
         "lattice's nearest-neighbour Laplacian; its sparse saddle-point "
         "form, about three times the particles, is factorized once and "
         "costs one pair of triangular solves per application; needs a "
-        "particle model, 2D or 3D; in 3D its factorization grows faster "
-        "than the particles: on the 3e5 bar of benchmarks/scaling one rank "
-        "held 9.7 GB after 11 minutes, where `diagonal` solves in 24 s).");
+        "particle model, 2D or 3D; its factorization grows faster than "
+        "the particles, so in 3D it suits small lattices only, and "
+        "`diagonal` the large ones; measurements in "
+        "benchmarks/scaling/HISTORY.md).");
       prm.declare_entry(
         "Collar layer weight",
         "auto",
@@ -107,11 +115,11 @@ namespace ltn
         "2D and 3D). The outer iterations' largest eigenvalue grows with "
         "the overlap width w over the horizon eps and lives on that layer. "
         "`auto`: for LPS with w/eps > 8, 1.5 log2(w/(8 eps)) at each level "
-        "(3 at w/eps = 32: the cracked plate at spacing 1/1280 took 20 "
-        "outer iterations instead of 23, at 1/2560 23 instead of 28; the "
-        "3D bar at w/eps = 16 11 instead of 13); else 0, as for nonlocal "
-        "diffusion, where it costs iterations (doc/discretization.md, "
-        "'A coarse level for the controls'). The weight used goes to "
+        "(3 at w/eps = 32), which takes the outer iterations down where "
+        "the overlap is wide; else 0, as for nonlocal diffusion, where it "
+        "costs iterations (doc/discretization.md, 'A coarse level for the "
+        "controls'; measurements in benchmarks/speed_accuracy/HISTORY.md). "
+        "The weight used goes to "
         "`solver.control "
         "preconditioner` in summary.json.");
       prm.declare_entry(
@@ -124,12 +132,11 @@ namespace ltn
         "direction along it: an opening that varies along the crack, "
         "the slowest mode the polynomial fields leave in 2D "
         "(doc/discretization.md, 'A coarse level for the controls'). One "
-        "nonlocal solve per field, "
-        "once; on the cracked plate of benchmarks/speed_accuracy the outer "
-        "iterations fall from 20 to 16 at spacing 1/1280, and the solve "
-        "takes 17 % less time. `auto`: in 2D only (the 3D bars of "
-        "benchmarks/scaling have no such slow mode: one outer iteration "
-        "fewer, for two solves more, 10 % more time on the 10^6 bar). A "
+        "nonlocal solve per field, once, for fewer outer iterations where "
+        "that mode is slow. `auto`: in 2D only (the 3D bars have no such "
+        "slow mode, and the extra solves cost more than they save; "
+        "measurements in benchmarks/speed_accuracy/HISTORY.md and "
+        "benchmarks/scaling/HISTORY.md). A "
         "field the polynomial columns span already (Coarse space degree 3 "
         "and more) is dropped. The number kept goes to `solver.control "
         "preconditioner` in summary.json.");
@@ -145,7 +152,7 @@ namespace ltn
         "the reference of benchmarks/scaling. The extra solves count in "
         "the solve's wall time.");
       prm.declare_entry("Model solvers",
-                        "direct",
+                        "auto",
                         selection_pattern(model_solver_names()),
                         "How each model's equations are solved, inside the "
                         "reduced-space CG or alone: `direct` (sparse LU of "
@@ -157,7 +164,11 @@ namespace ltn
                         "cg` (the same, but CG on the particle model's free "
                         "unknowns, whose block is symmetric positive "
                         "definite, for forward and adjoint solves alike; "
-                        "the finite element model keeps GMRES).");
+                        "the finite element model keeps GMRES), or `auto`: "
+                        "preconditioned cg with the finite element model "
+                        "factorized from 50,000 particle unknowns on (2D, "
+                        "3D) or with a matrix-free operator, unless the "
+                        "Method is full space direct; direct otherwise.");
       prm.declare_entry("Local model solver",
                         "same",
                         Patterns::Selection("same|direct"),
@@ -265,7 +276,8 @@ namespace ltn
                   to_string(model_solvers.relative_tolerance),
                   "a tolerance in (0, 1)");
       check_input(!time_standalone_solves ||
-                    method == CouplingMethod::reduced_space_cg,
+                    method == CouplingMethod::reduced_space_cg ||
+                    method == CouplingMethod::automatic,
                   "Coupling/Time standalone solves",
                   "true",
                   "`false` unless Coupling/Method = reduced space cg (the "
@@ -286,7 +298,7 @@ namespace ltn
   {
     if (!matrix_free)
       return;
-    check_input(model_solvers.iterative(),
+    check_input(model_solvers.kind != ModelSolverKind::direct,
                 "Coupling/Model solvers",
                 "direct",
                 "`preconditioned gmres` or `preconditioned cg` with "

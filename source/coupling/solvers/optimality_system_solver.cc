@@ -8,7 +8,8 @@ namespace ltn
   template <int dim>
   CouplingSolution
   solve_optimality_system(const CouplingSystem<dim> &system,
-                          const CouplingParameters  &parameters)
+                          const CouplingParameters  &parameters,
+                          Progress                  &progress)
   {
     switch (parameters.method)
       {
@@ -18,7 +19,8 @@ namespace ltn
                                         parameters.max_iterations,
                                         parameters.model_solvers,
                                         parameters.controls,
-                                        parameters.time_standalone_solves);
+                                        parameters.time_standalone_solves,
+                                        progress);
         case CouplingMethod::full_space_gmres:
           return solve_full_space_gmres(system,
                                         parameters.relative_tolerance,
@@ -27,18 +29,25 @@ namespace ltn
                                         parameters.controls);
         case CouplingMethod::full_space_direct:
           return solve_full_space_direct(system);
+        case CouplingMethod::automatic:
+          break;
       }
-    AssertThrow(false, ExcInternalError());
+    AssertThrow(false,
+                ExcMessage("Coupling/Method = auto reached the solver: the "
+                           "scene resolves it first (choose_solvers())"));
     return {};
   }
 
   template CouplingSolution
   solve_optimality_system(const CouplingSystem<1> &,
-                          const CouplingParameters &);
+                          const CouplingParameters &,
+                          Progress &);
   template CouplingSolution
   solve_optimality_system(const CouplingSystem<2> &,
-                          const CouplingParameters &);
+                          const CouplingParameters &,
+                          Progress &);
   template CouplingSolution
   solve_optimality_system(const CouplingSystem<3> &,
-                          const CouplingParameters &);
+                          const CouplingParameters &,
+                          Progress &);
 } // namespace ltn

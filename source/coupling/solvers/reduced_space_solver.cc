@@ -14,9 +14,11 @@
 #include <Epetra_MultiVector.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <limits>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 namespace ltn
 {
@@ -49,7 +51,8 @@ namespace ltn
                          const unsigned int         max_iterations,
                          const ModelSolverSettings &model_solvers,
                          const ControlPreconditionerSettings &controls,
-                         const bool time_standalone_solves)
+                         const bool time_standalone_solves,
+                         Progress  &progress)
   {
     // Two levels (doc/discretization.md, 'A coarse level for the
     // controls'): deflation by the
@@ -73,6 +76,7 @@ namespace ltn
     // Each phase's wall time and the model solves in it, for the summary.
     std::array<ModelSolverStatistics, 2> phase_start;
     const auto end_phase = [&](const std::string &name) {
+      progress.report([&] { return "coupled solve: " + name + " done"; });
       CouplingSolution::Phase phase{name, phase_timer.wall_time(), {}};
       for (const unsigned int k : {0u, 1u})
         {
@@ -113,7 +117,16 @@ namespace ltn
         // Relaxed inner solves (doc/discretization.md, 'A coarse level for
         // the controls'): the
         // error of the Hessian's products may grow as the residual falls.
-        const auto relax = [&](const double residual) {
+        unsigned int iteration = 0;
+        const auto   relax     = [&](const double residual) {
+          ++iteration;
+          progress.report([&] {
+            std::ostringstream line;
+            line << "coupled solve: iteration " << iteration
+                 << ", relative residual " << std::scientific
+                 << std::setprecision(2) << residual / rhs_norm;
+            return line.str();
+          });
           const double relaxed =
             inner.relative_tolerance * rhs_norm /
             std::max(residual, std::numeric_limits<double>::min());
@@ -331,19 +344,22 @@ namespace ltn
                          unsigned int,
                          const ModelSolverSettings &,
                          const ControlPreconditionerSettings &,
-                         bool);
+                         bool,
+                         Progress &);
   template CouplingSolution
   solve_reduced_space_cg(const CouplingSystem<2> &,
                          double,
                          unsigned int,
                          const ModelSolverSettings &,
                          const ControlPreconditionerSettings &,
-                         bool);
+                         bool,
+                         Progress &);
   template CouplingSolution
   solve_reduced_space_cg(const CouplingSystem<3> &,
                          double,
                          unsigned int,
                          const ModelSolverSettings &,
                          const ControlPreconditionerSettings &,
-                         bool);
+                         bool,
+                         Progress &);
 } // namespace ltn

@@ -18,6 +18,8 @@ namespace ltn
   /** How the optimality system is solved (`Coupling/Method`). */
   enum class CouplingMethod
   {
+    /** Chosen per level by choose_solvers() (scene/solver_choice.h). */
+    automatic,
     /** States, controls and multipliers in one factorized system. */
     full_space_direct,
     /** The same system unassembled: flexible GMRES, block elimination. */

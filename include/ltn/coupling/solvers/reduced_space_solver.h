@@ -1,5 +1,6 @@
 #pragma once
 
+#include <ltn/base/progress.h>
 #include <ltn/coupling/preconditioners/control_preconditioner.h>
 #include <ltn/coupling/system/coupling_system.h>
 
@@ -26,6 +27,8 @@ namespace ltn
    * @p time_standalone_solves, each model is then solved once more alone,
    * from zero, with its data and the final controls, and the model solvers'
    * setup and these solves are timed as CouplingSolution::standalone_seconds.
+   * Each phase and each
+   * iteration is reported to @p progress, with the relative residual.
    */
   template <int dim>
   CouplingSolution
@@ -34,5 +37,6 @@ namespace ltn
                          const unsigned int         max_iterations,
                          const ModelSolverSettings &model_solvers,
                          const ControlPreconditionerSettings &controls,
-                         const bool time_standalone_solves);
+                         const bool time_standalone_solves,
+                         Progress  &progress);
 } // namespace ltn
