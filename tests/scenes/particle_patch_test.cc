@@ -42,7 +42,7 @@ namespace
           {
             INFO(scene << ", " << method << ": h " << level.h << " eps "
                        << level.horizon << ", CG iterations "
-                       << level.iterations);
+                       << level.solver.iterations);
             CHECK(level.coupled_errors.linf / max_u <= 1e-10);
             // The unpreconditioned reduced-space CG leaves weakly observed
             // control modes (they move u_l only inside the overlap) at

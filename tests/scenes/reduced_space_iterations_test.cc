@@ -44,10 +44,10 @@ TEST_CASE("reduced-space CG iterations at fixed eps/h over three halvings",
   REQUIRE(levels.size() == 4);
   for (std::size_t l = 0; l < levels.size(); ++l)
     {
-      const unsigned int with   = levels[l].iterations;
-      const unsigned int coarse = two_level.summary.levels[l].iterations;
+      const unsigned int with   = levels[l].solver.iterations;
+      const unsigned int coarse = two_level.summary.levels[l].solver.iterations;
       const unsigned int without =
-        unpreconditioned.summary.levels[l].iterations;
+        unpreconditioned.summary.levels[l].solver.iterations;
       std::cout << "h = " << levels[l].h << ": " << coarse << " two-level, "
                 << with << " block-diagonal, " << without
                 << " unpreconditioned CG iterations" << std::endl;
@@ -61,9 +61,9 @@ TEST_CASE("reduced-space CG iterations at fixed eps/h over three halvings",
   // Over the three halvings, less than double (9 to 16 on one rank, 9 to
   // 17 on two: the partition's round-off moves a count by one, which is
   // why one halving's ratio is not asserted); unpreconditioned 13 times.
-  CHECK(levels.back().iterations < 2 * levels.front().iterations);
-  CHECK(10 * levels.back().iterations <
-        unpreconditioned.summary.levels.back().iterations);
+  CHECK(levels.back().solver.iterations < 2 * levels.front().solver.iterations);
+  CHECK(10 * levels.back().solver.iterations <
+        unpreconditioned.summary.levels.back().solver.iterations);
 }
 
 
@@ -86,19 +86,21 @@ TEST_CASE("diffusion: with the surrogate Hessian block of the nonlocal "
   REQUIRE(levels.size() == 4);
   for (std::size_t l = 0; l < levels.size(); ++l)
     {
-      std::cout << "h = " << levels[l].h << ": " << levels[l].iterations
+      std::cout << "h = " << levels[l].h << ": " << levels[l].solver.iterations
                 << " two-level CG iterations with the surrogate block "
                    "("
-                << levels[l].nonlocal_block_unknowns
+                << levels[l].solver.nonlocal_block_unknowns
                 << " unknowns in its saddle-point system), "
-                << diagonal.summary.levels[l].iterations << " with D_n"
+                << diagonal.summary.levels[l].solver.iterations << " with D_n"
                 << std::endl;
-      CHECK(levels[l].nonlocal_block_unknowns > 0);
+      CHECK(levels[l].solver.nonlocal_block_unknowns > 0);
       CHECK(relative_difference(surrogate.solutions[l], diagonal.solutions[l]) <
             1e-8);
     }
-  CHECK(levels.back().iterations < 1.5 * levels.front().iterations);
-  CHECK(levels.back().iterations < diagonal.summary.levels.back().iterations);
+  CHECK(levels.back().solver.iterations <
+        1.5 * levels.front().solver.iterations);
+  CHECK(levels.back().solver.iterations <
+        diagonal.summary.levels.back().solver.iterations);
 }
 
 
@@ -112,24 +114,25 @@ TEST_CASE("the two-level control preconditioner removes the slow modes the "
   const SceneRun    two_level      = run_with(scene, 2, "two level");
   for (std::size_t l = 0; l < 2; ++l)
     {
-      const unsigned int with   = block_diagonal.summary.levels[l].iterations;
-      const unsigned int coarse = two_level.summary.levels[l].iterations;
+      const unsigned int with =
+        block_diagonal.summary.levels[l].solver.iterations;
+      const unsigned int coarse = two_level.summary.levels[l].solver.iterations;
       std::cout << "LPS plate, h = " << block_diagonal.summary.levels[l].h
                 << ": " << coarse << " two-level ("
-                << two_level.summary.levels[l].coarse_modes
+                << two_level.summary.levels[l].solver.coarse_modes
                 << " coarse modes), " << with << " block-diagonal CG iterations"
                 << std::endl;
       INFO("level " << l << ": " << coarse << " against " << with);
       // Deflation by the nonlocal controls' linear fields (2 components x
       // 3 monomials) and by every local control, which the block-diagonal
       // level holds explicitly.
-      CHECK(two_level.summary.levels[l].coarse_modes ==
-            6 + block_diagonal.summary.levels[l].explicit_controls);
+      CHECK(two_level.summary.levels[l].solver.coarse_modes ==
+            6 + block_diagonal.summary.levels[l].solver.explicit_controls);
       CHECK(relative_difference(block_diagonal.solutions[l],
                                 two_level.solutions[l]) < 1e-8);
       CHECK(2 * coarse < with);
       if (l > 0)
-        CHECK(coarse < 1.3 * two_level.summary.levels[l - 1].iterations);
+        CHECK(coarse < 1.3 * two_level.summary.levels[l - 1].solver.iterations);
     }
 }
 
@@ -154,17 +157,19 @@ TEST_CASE("LPS: the scalable solvers' iterations at fixed eps/h grow by less "
   const auto    &levels = run.summary.levels;
   REQUIRE(levels.size() == 4);
   const auto per_solve = [](const ltn::LevelRecord &level) {
-    return double(level.model_iterations[0]) / level.model_solves[0];
+    return double(level.solver.model_solvers[0].iterations) /
+           level.solver.model_solvers[0].solves;
   };
   for (const auto &level : levels)
-    std::cout << "LPS plate, h = " << level.h << ": " << level.iterations
+    std::cout << "LPS plate, h = " << level.h << ": " << level.solver.iterations
               << " outer CG iterations, " << per_solve(level)
               << " nonlocal CG iterations per solve" << std::endl;
-  INFO("outer " << levels.front().iterations << " -> "
-                << levels.back().iterations << ", nonlocal per solve "
+  INFO("outer " << levels.front().solver.iterations << " -> "
+                << levels.back().solver.iterations << ", nonlocal per solve "
                 << per_solve(levels.front()) << " -> "
                 << per_solve(levels.back()));
-  CHECK(levels.back().iterations < 1.5 * levels.front().iterations);
+  CHECK(levels.back().solver.iterations <
+        1.5 * levels.front().solver.iterations);
   CHECK(per_solve(levels.back()) < 1.5 * per_solve(levels.front()));
   // The coupled solution converges at second order meanwhile.
   check_coupled_rates(run.summary, 1.9, 1.9);
@@ -192,10 +197,11 @@ TEST_CASE("the two-level reduced-space CG converges with model solver "
   const SceneRun loose_run = run_scene("lps_plate_2d_crack", loose);
   const SceneRun tight_run = run_scene("lps_plate_2d_crack", tight);
   const auto    &level     = loose_run.summary.levels.front();
-  INFO("iterations " << level.iterations << " against "
-                     << tight_run.summary.levels.front().iterations);
-  CHECK(level.residual <= 1e-8);
-  CHECK(level.iterations <= tight_run.summary.levels.front().iterations + 2);
+  INFO("iterations " << level.solver.iterations << " against "
+                     << tight_run.summary.levels.front().solver.iterations);
+  CHECK(level.solver.residual <= 1e-8);
+  CHECK(level.solver.iterations <=
+        tight_run.summary.levels.front().solver.iterations + 2);
   CHECK(relative_difference(loose_run.solutions.front(),
                             tight_run.solutions.front()) < 1e-6);
 }
@@ -234,13 +240,15 @@ TEST_CASE("the collar layer's weight `auto` bounds the top of the outer "
   const auto    &after  = layer.summary.levels.front();
   CHECK(before.collar_layer_weight == 0);
   CHECK(after.collar_layer_weight == Approx(1.5).epsilon(1e-12));
-  INFO("largest Ritz value " << before.largest_ritz_value << " -> "
-                             << after.largest_ritz_value << ", smallest "
-                             << before.smallest_ritz_value << " -> "
-                             << after.smallest_ritz_value);
-  CHECK(after.largest_ritz_value < 0.5 * before.largest_ritz_value);
-  CHECK(after.largest_ritz_value / after.smallest_ritz_value <
-        0.75 * before.largest_ritz_value / before.smallest_ritz_value);
+  INFO("largest Ritz value " << before.solver.largest_ritz_value << " -> "
+                             << after.solver.largest_ritz_value << ", smallest "
+                             << before.solver.smallest_ritz_value << " -> "
+                             << after.solver.smallest_ritz_value);
+  CHECK(after.solver.largest_ritz_value <
+        0.5 * before.solver.largest_ritz_value);
+  CHECK(after.solver.largest_ritz_value / after.solver.smallest_ritz_value <
+        0.75 * before.solver.largest_ritz_value /
+          before.solver.smallest_ritz_value);
   CHECK(relative_difference(layer.solutions[0], plain.solutions[0]) < 1e-6);
 }
 
@@ -262,18 +270,20 @@ TEST_CASE("the crack opening field removes the 2D cracked plate's slowest "
                "Coupling/Crack opening coarse fields=false"});
   const auto &after  = with.summary.levels.front();
   const auto &before = without.summary.levels.front();
-  CHECK(after.crack_opening_fields == 1);
-  CHECK(before.crack_opening_fields == 0);
-  CHECK(after.coarse_modes == before.coarse_modes + 1);
-  INFO("smallest Ritz value "
-       << before.smallest_ritz_value << " -> " << after.smallest_ritz_value
-       << ", iterations " << before.iterations << " -> " << after.iterations);
-  CHECK(after.smallest_ritz_value > 3 * before.smallest_ritz_value);
-  CHECK(after.iterations < before.iterations);
+  CHECK(after.solver.crack_opening_fields == 1);
+  CHECK(before.solver.crack_opening_fields == 0);
+  CHECK(after.solver.coarse_modes == before.solver.coarse_modes + 1);
+  INFO("smallest Ritz value " << before.solver.smallest_ritz_value << " -> "
+                              << after.solver.smallest_ritz_value
+                              << ", iterations " << before.solver.iterations
+                              << " -> " << after.solver.iterations);
+  CHECK(after.solver.smallest_ritz_value >
+        3 * before.solver.smallest_ritz_value);
+  CHECK(after.solver.iterations < before.solver.iterations);
   CHECK(relative_difference(with.solutions[0], without.solutions[0]) < 1e-9);
   // Cubic columns span the field already: it is dropped, and not counted.
   const SceneRun cubic =
     run_scene("lps_plate_2d_crack",
               {"Output/Write VTU=false", "Coupling/Coarse space degree=3"});
-  CHECK(cubic.summary.levels.front().crack_opening_fields == 0);
+  CHECK(cubic.summary.levels.front().solver.crack_opening_fields == 0);
 }

@@ -53,28 +53,28 @@ namespace
   {
     for (const auto &level : run.summary.levels)
       {
-        if (level.solve_phases.empty())
+        if (level.solver.phases.empty())
           continue;
-        CHECK(level.solve_phases.front().name == "model solver setup");
+        CHECK(level.solver.phases.front().name == "model solver setup");
         // The true residual's adjoint solves follow the final solves where
         // the CG ran.
-        const std::size_t n_phases = level.solve_phases.size();
+        const std::size_t n_phases = level.solver.phases.size();
         const bool        true_residual =
-          level.solve_phases.back().name == "true residual";
+          level.solver.phases.back().name == "true residual";
         REQUIRE(n_phases >= 2);
-        CHECK(level.solve_phases[n_phases - 1 - true_residual].name ==
+        CHECK(level.solver.phases[n_phases - 1 - true_residual].name ==
               "final solves");
-        CHECK(true_residual == (level.true_residual >= 0));
+        CHECK(true_residual == (level.solver.true_residual >= 0));
         for (const unsigned int k : {0u, 1u})
           {
             unsigned int solves = 0, iterations = 0;
-            for (const auto &phase : level.solve_phases)
+            for (const auto &phase : level.solver.phases)
               {
-                solves += phase.solves[k];
-                iterations += phase.iterations[k];
+                solves += phase.model_solvers[k].solves;
+                iterations += phase.model_solvers[k].iterations;
               }
-            CHECK(solves == level.model_solves[k]);
-            CHECK(iterations == level.model_iterations[k]);
+            CHECK(solves == level.solver.model_solvers[k].solves);
+            CHECK(iterations == level.solver.model_solvers[k].iterations);
           }
       }
   }
@@ -96,7 +96,7 @@ namespace
         INFO(scene << ", " << method.front() << ", " << method.back()
                    << ": relative difference to the direct solvers " << d
                    << ", outer iterations "
-                   << other.summary.levels.back().iterations);
+                   << other.summary.levels.back().solver.iterations);
         CHECK(d < 1e-8);
         check_phases(other);
       }
@@ -142,40 +142,43 @@ TEST_CASE("the reduced-space CG's final solves start from the states it "
   const SceneRun run = run_scene("lps_plate_2d_asymptotic_compatibility", sets);
   for (const auto &level : run.summary.levels)
     {
-      REQUIRE(level.solve_phases.size() >= 3);
-      const auto &standalone = level.solve_phases.back();
-      const auto &final = level.solve_phases[level.solve_phases.size() - 3];
+      REQUIRE(level.solver.phases.size() >= 3);
+      const auto &standalone = level.solver.phases.back();
+      const auto &final = level.solver.phases[level.solver.phases.size() - 3];
       CHECK(standalone.name == "standalone solves");
       CHECK(final.name == "final solves");
-      CHECK(level.solve_phases[level.solve_phases.size() - 2].name ==
+      CHECK(level.solver.phases[level.solver.phases.size() - 2].name ==
             "true residual");
-      CHECK(standalone.solves[ltn::nonlocal_model] == 1);
-      CHECK(final.solves[ltn::nonlocal_model] == 1);
+      CHECK(standalone.model_solvers[ltn::nonlocal_model].solves == 1);
+      CHECK(final.model_solvers[ltn::nonlocal_model].solves == 1);
       // The same solve, from zero and from the tracked states.
-      INFO("final solve " << final.iterations[ltn::nonlocal_model]
-                          << " iterations, standalone "
-                          << standalone.iterations[ltn::nonlocal_model]);
-      CHECK(2 * final.iterations[ltn::nonlocal_model] <
-            standalone.iterations[ltn::nonlocal_model]);
-      CHECK(level.standalone_seconds > standalone.seconds);
+      INFO("final solve "
+           << final.model_solvers[ltn::nonlocal_model].iterations
+           << " iterations, standalone "
+           << standalone.model_solvers[ltn::nonlocal_model].iterations);
+      CHECK(2 * final.model_solvers[ltn::nonlocal_model].iterations <
+            standalone.model_solvers[ltn::nonlocal_model].iterations);
+      CHECK(level.solver.standalone_seconds > standalone.seconds);
       // Each iteration solves the particle model forward and both models
       // backward; every local control is a coarse column, so the local
       // residual is zero and the FEM model is not solved forward (the
       // start adds one adjoint solve of each).
-      const auto iterations = std::find_if(level.solve_phases.begin(),
-                                           level.solve_phases.end(),
+      const auto iterations = std::find_if(level.solver.phases.begin(),
+                                           level.solver.phases.end(),
                                            [](const auto &phase) {
                                              return phase.name == "iterations";
                                            });
-      REQUIRE(iterations != level.solve_phases.end());
-      CHECK(iterations->solves[ltn::nonlocal_model] ==
-            2 * level.iterations + 1);
-      CHECK(iterations->solves[ltn::local_model] == level.iterations + 1);
+      REQUIRE(iterations != level.solver.phases.end());
+      CHECK(iterations->model_solvers[ltn::nonlocal_model].solves ==
+            2 * level.solver.iterations + 1);
+      CHECK(iterations->model_solvers[ltn::local_model].solves ==
+            level.solver.iterations + 1);
       // The model solvers' totals are the coupled solve's alone.
       unsigned int solves = 0;
-      for (std::size_t p = 0; p + 1 < level.solve_phases.size(); ++p)
-        solves += level.solve_phases[p].solves[ltn::nonlocal_model];
-      CHECK(solves == level.model_solves[ltn::nonlocal_model]);
+      for (std::size_t p = 0; p + 1 < level.solver.phases.size(); ++p)
+        solves +=
+          level.solver.phases[p].model_solvers[ltn::nonlocal_model].solves;
+      CHECK(solves == level.solver.model_solvers[ltn::nonlocal_model].solves);
     }
 }
 
@@ -196,10 +199,12 @@ TEST_CASE("the reduced-space CG's true residual is its recursive one with "
     run_scene("lps_plate_2d_asymptotic_compatibility", common);
   for (const auto &level : exact.summary.levels)
     {
-      INFO("recursive " << level.residual << ", true " << level.true_residual);
-      REQUIRE(level.true_residual > 0);
-      CHECK(level.residual <= 1e-6);
-      CHECK(std::abs(level.true_residual / level.residual - 1) < 1e-2);
+      INFO("recursive " << level.solver.residual << ", true "
+                        << level.solver.true_residual);
+      REQUIRE(level.solver.true_residual > 0);
+      CHECK(level.solver.residual <= 1e-6);
+      CHECK(std::abs(level.solver.true_residual / level.solver.residual - 1) <
+            1e-2);
     }
   // CG model solvers to 1e-8, relaxed: the true residual may drift above
   // the recursive one, by a few times (doc/discretization.md, 'A coarse
@@ -214,10 +219,12 @@ TEST_CASE("the reduced-space CG's true residual is its recursive one with "
     run_scene("lps_plate_2d_asymptotic_compatibility", relaxed);
   for (const auto &level : inexact.summary.levels)
     {
-      INFO("recursive " << level.residual << ", true " << level.true_residual);
-      std::cout << "relaxed inner solves: recursive residual " << level.residual
-                << ", true " << level.true_residual << std::endl;
-      CHECK(level.residual <= 1e-6);
-      CHECK(level.true_residual < 1e-5);
+      INFO("recursive " << level.solver.residual << ", true "
+                        << level.solver.true_residual);
+      std::cout << "relaxed inner solves: recursive residual "
+                << level.solver.residual << ", true "
+                << level.solver.true_residual << std::endl;
+      CHECK(level.solver.residual <= 1e-6);
+      CHECK(level.solver.true_residual < 1e-5);
     }
 }

@@ -19,7 +19,7 @@ namespace
         for (const auto &level : run.summary.levels)
           {
             INFO(method << ": h " << level.h << " eps " << level.horizon
-                        << " residual " << level.residual);
+                        << " residual " << level.solver.residual);
             CHECK(level.coupled_errors.linf / 1.75 <= 1e-10);
           }
         solutions.push_back(run.solutions.back());

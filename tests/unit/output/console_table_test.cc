@@ -37,15 +37,24 @@ namespace
   level(const double solve_seconds, const unsigned int outer_iterations)
   {
     LevelRecord record;
-    record.iterations = outer_iterations;
-    record.timings    = {{"assemble nonlocal", 0.5}, {"solve", solve_seconds}};
-    LevelRecord::SolvePhase coarse{"coarse space", 12.35};
-    coarse.solves     = {{12, 78}};
-    coarse.iterations = {{125, 0}};
-    LevelRecord::SolvePhase iterations{"iterations", 29.1};
-    iterations.solves     = {{25, 13}};
-    iterations.iterations = {{340, 26}};
-    record.solve_phases   = {coarse, iterations};
+    record.solver.iterations = outer_iterations;
+    record.timings = {{"assemble nonlocal", 0.5}, {"solve", solve_seconds}};
+    // Each model's solves and iterations in a phase.
+    const auto phase = [](const std::string                &name,
+                          const double                      seconds,
+                          const std::array<unsigned int, 2> solves,
+                          const std::array<unsigned int, 2> iterations) {
+      SolverStatistics::Phase p{name, seconds, {}};
+      for (const unsigned int k : {0u, 1u})
+        {
+          p.model_solvers[k].solves     = solves[k];
+          p.model_solvers[k].iterations = iterations[k];
+        }
+      return p;
+    };
+    record.solver.phases = {
+      phase("coarse space", 12.35, {{12, 78}}, {{125, 0}}),
+      phase("iterations", 29.1, {{25, 13}}, {{340, 26}})};
     return record;
   }
 } // namespace
@@ -85,7 +94,7 @@ TEST_CASE("the console's time per phase sums the levels and lists the last "
   // One level without solve phases (a direct method): the first table only.
   RunSummary direct;
   direct.levels = {level(1., 1)};
-  direct.levels.front().solve_phases.clear();
+  direct.levels.front().solver.phases.clear();
   direct.total_time = 2.;
   std::ostringstream direct_out;
   print_time_per_phase(direct, direct_out);
