@@ -23,9 +23,9 @@ namespace ltn
         const LevelRecord &r = levels[l];
         out << std::setprecision(4) << std::defaultfloat << std::setw(11) << r.h
             << std::setw(11) << r.horizon << std::setw(9) << r.n_nonlocal_dofs
-            << std::setw(9) << r.n_local_dofs << std::setw(6) << r.iterations
-            << std::scientific << std::setprecision(2) << std::setw(11)
-            << r.mismatch_J;
+            << std::setw(9) << r.n_local_dofs << std::setw(6)
+            << r.solver.iterations << std::scientific << std::setprecision(2)
+            << std::setw(11) << r.mismatch_J;
         if (r.has_errors)
           {
             const auto rate = [&](const double coarse, const double fine) {
@@ -76,26 +76,27 @@ namespace ltn
             << " %\n";
       }
     const LevelRecord &last = levels.back();
-    if (last.solve_phases.empty())
+    if (last.solver.phases.empty())
       return;
     // Each model's solves in a phase, with its iterations where it
     // iterates (a factorized model solves without).
-    const auto solves = [](const LevelRecord::SolvePhase &phase,
+    const auto solves = [](const SolverStatistics::Phase &phase,
                            const unsigned int             k) {
-      std::ostringstream s;
-      s << phase.solves[k];
-      if (phase.iterations[k] > 0)
-        s << " (" << phase.iterations[k] << ")";
+      const ModelSolverStatistics &solver = phase.model_solvers[k];
+      std::ostringstream           s;
+      s << solver.solves;
+      if (solver.iterations > 0)
+        s << " (" << solver.iterations << ")";
       return s.str();
     };
     out << "\nThe coupled solve"
         << (levels.size() > 1 ? " of the last level" : "") << ", "
-        << last.iterations << " outer iterations:\n"
+        << last.solver.iterations << " outer iterations:\n"
         << "  " << std::left << std::setw(22) << "phase" << std::right
         << std::setw(9) << "seconds" << std::setw(26)
         << "nonlocal solves (iter.)" << std::setw(24) << "local solves (iter.)"
         << '\n';
-    for (const LevelRecord::SolvePhase &phase : last.solve_phases)
+    for (const SolverStatistics::Phase &phase : last.solver.phases)
       out << "  " << std::left << std::setw(22) << phase.name << std::right
           << std::setw(9) << seconds(phase.seconds) << std::setw(26)
           << solves(phase, 0) << std::setw(24) << solves(phase, 1) << '\n';

@@ -50,36 +50,38 @@ namespace ltn
       j["n_controls"]           = level.n_controls;
       j["horizon"]              = level.horizon;
       j["solver"]["method"]     = level.solver_method;
-      j["solver"]["iterations"] = level.iterations;
-      j["solver"]["residual"]   = level.residual;
-      if (level.true_residual >= 0)
-        j["solver"]["true residual"] = level.true_residual;
-      if (level.explicit_controls > 0 || level.coarse_modes > 0)
+      j["solver"]["iterations"] = level.solver.iterations;
+      j["solver"]["residual"]   = level.solver.residual;
+      if (level.solver.true_residual >= 0)
+        j["solver"]["true residual"] = level.solver.true_residual;
+      if (level.solver.explicit_controls > 0 || level.solver.coarse_modes > 0)
         {
           JsonValue &preconditioner = j["solver"]["control preconditioner"];
-          preconditioner["explicit controls"] = level.explicit_controls;
-          preconditioner["coarse modes"]      = level.coarse_modes;
-          preconditioner["setup seconds"] = level.preconditioner_setup_seconds;
-          preconditioner["collar layer weight"]  = level.collar_layer_weight;
-          preconditioner["crack opening fields"] = level.crack_opening_fields;
-          if (level.nonlocal_block_unknowns > 0)
+          preconditioner["explicit controls"] = level.solver.explicit_controls;
+          preconditioner["coarse modes"]      = level.solver.coarse_modes;
+          preconditioner["setup seconds"] =
+            level.solver.preconditioner_setup_seconds;
+          preconditioner["collar layer weight"] = level.collar_layer_weight;
+          preconditioner["crack opening fields"] =
+            level.solver.crack_opening_fields;
+          if (level.solver.nonlocal_block_unknowns > 0)
             preconditioner["nonlocal block unknowns"] =
-              level.nonlocal_block_unknowns;
+              level.solver.nonlocal_block_unknowns;
         }
-      if (level.largest_ritz_value > 0)
+      if (level.solver.largest_ritz_value > 0)
         {
           JsonValue &ritz  = j["solver"]["Ritz values"];
-          ritz["smallest"] = level.smallest_ritz_value;
-          ritz["largest"]  = level.largest_ritz_value;
+          ritz["smallest"] = level.solver.smallest_ritz_value;
+          ritz["largest"]  = level.solver.largest_ritz_value;
         }
-      if (level.standalone_seconds > 0)
+      if (level.solver.standalone_seconds > 0)
         j["solver"]["standalone model solves seconds"] =
-          level.standalone_seconds;
+          level.solver.standalone_seconds;
       const char *names[2] = {"nonlocal", "local"};
-      if (!level.solve_phases.empty())
+      if (!level.solver.phases.empty())
         {
           JsonValue phases = JsonValue::array();
-          for (const auto &phase : level.solve_phases)
+          for (const auto &phase : level.solver.phases)
             {
               JsonValue entry  = JsonValue::object();
               entry["name"]    = phase.name;
@@ -87,27 +89,26 @@ namespace ltn
               for (const unsigned int k : {0u, 1u})
                 {
                   JsonValue &model    = entry[names[k]];
-                  model["solves"]     = phase.solves[k];
-                  model["iterations"] = phase.iterations[k];
-                  model["seconds"]    = phase.solve_seconds[k];
+                  model["solves"]     = phase.model_solvers[k].solves;
+                  model["iterations"] = phase.model_solvers[k].iterations;
+                  model["seconds"]    = phase.model_solvers[k].seconds;
                 }
               phases.push_back(entry);
             }
           j["solver"]["phases"] = phases;
         }
       for (const unsigned int k : {0u, 1u})
-        if (level.model_solves[k] > 0)
+        if (const ModelSolverStatistics &solver = level.solver.model_solvers[k];
+            solver.solves > 0)
           {
             JsonValue &model    = j["solver"]["model solvers"][names[k]];
-            model["solves"]     = level.model_solves[k];
-            model["iterations"] = level.model_iterations[k];
+            model["solves"]     = solver.solves;
+            model["iterations"] = solver.iterations;
             model["iterations per solve"] =
-              static_cast<double>(level.model_iterations[k]) /
-              level.model_solves[k];
-            model["seconds"]          = level.model_seconds[k];
-            model["operator seconds"] = level.model_operator_seconds[k];
-            model["preconditioner seconds"] =
-              level.model_preconditioner_seconds[k];
+              static_cast<double>(solver.iterations) / solver.solves;
+            model["seconds"]                = solver.seconds;
+            model["operator seconds"]       = solver.operator_seconds;
+            model["preconditioner seconds"] = solver.preconditioner_seconds;
           }
       JsonValue &memory              = j["memory"];
       memory["nonlocal model bytes"] = level.model_bytes[0];

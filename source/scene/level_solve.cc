@@ -63,41 +63,11 @@ namespace ltn
         record.solver_method =
           selection_name(model_solver_names(), parameters.model_solvers.kind);
       }
-    record.iterations              = solution.iterations;
-    record.residual                = solution.residual;
-    record.true_residual           = solution.true_residual;
-    record.explicit_controls       = solution.explicit_controls;
-    record.coarse_modes            = solution.coarse_modes;
-    record.collar_layer_weight     = parameters.controls.collar_layer_weight;
-    record.crack_opening_fields    = solution.crack_opening_fields;
-    record.nonlocal_block_unknowns = solution.nonlocal_block_unknowns;
-    record.preconditioner_setup_seconds = solution.preconditioner_setup_seconds;
-    record.standalone_seconds           = solution.standalone_seconds;
-    record.smallest_ritz_value          = solution.smallest_ritz_value;
-    record.largest_ritz_value           = solution.largest_ritz_value;
-    for (const auto &phase : solution.phases)
-      {
-        LevelRecord::SolvePhase &entry =
-          record.solve_phases.emplace_back(LevelRecord::SolvePhase{});
-        entry.name    = phase.name;
-        entry.seconds = phase.seconds;
-        for (const unsigned int k : {0u, 1u})
-          {
-            entry.solves[k]        = phase.model_solvers[k].solves;
-            entry.iterations[k]    = phase.model_solvers[k].iterations;
-            entry.solve_seconds[k] = phase.model_solvers[k].seconds;
-          }
-      }
+    record.solver              = solution;
+    record.collar_layer_weight = parameters.controls.collar_layer_weight;
     const std::array<const DiscreteModel *, 2> models = {{nonlocal, local}};
     for (const unsigned int k : {0u, 1u})
       {
-        record.model_solves[k]     = solution.model_solvers[k].solves;
-        record.model_iterations[k] = solution.model_solvers[k].iterations;
-        record.model_seconds[k]    = solution.model_solvers[k].seconds;
-        record.model_operator_seconds[k] =
-          solution.model_solvers[k].operator_seconds;
-        record.model_preconditioner_seconds[k] =
-          solution.model_solvers[k].preconditioner_seconds;
         if (models[k])
           record.model_bytes[k] =
             Utilities::MPI::sum(static_cast<double>(

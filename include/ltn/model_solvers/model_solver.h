@@ -7,6 +7,7 @@
 
 #include <ltn/base/discrete_model.h>
 #include <ltn/base/selection.h>
+#include <ltn/base/solver_statistics.h>
 #include <ltn/model_solvers/model_direct_solver.h>
 #include <ltn/model_solvers/model_preconditioner.h>
 #include <ltn/model_solvers/schur_complement.h>
@@ -84,36 +85,6 @@ namespace ltn
       if (direct_local_model)
         settings.kind = ModelSolverKind::direct;
       return settings;
-    }
-  };
-
-  /**
-   * How often a model's solver ran, how many iterations it took, and the
-   * wall time (this rank's) of its solves, of which the iterative solver
-   * spent some in products with the operator and some in its
-   * preconditioner (the rest: vector operations, the Schur complement's
-   * reduction and recovery).
-   */
-  struct ModelSolverStatistics
-  {
-    unsigned int solves                 = 0;
-    unsigned int iterations             = 0;
-    double       seconds                = 0;
-    double       operator_seconds       = 0;
-    double       preconditioner_seconds = 0;
-    /** Bytes of this rank's factorization or preconditioners (estimated). */
-    std::size_t memory = 0;
-
-    /** The solves, iterations and times since @p earlier (memory: now). */
-    ModelSolverStatistics
-    since(const ModelSolverStatistics &earlier) const
-    {
-      return {solves - earlier.solves,
-              iterations - earlier.iterations,
-              seconds - earlier.seconds,
-              operator_seconds - earlier.operator_seconds,
-              preconditioner_seconds - earlier.preconditioner_seconds,
-              memory};
     }
   };
 

@@ -4,6 +4,7 @@
 
 #include <ltn/base/field_errors.h>
 #include <ltn/base/json.h>
+#include <ltn/base/solver_statistics.h>
 
 #include <array>
 #include <string>
@@ -25,48 +26,10 @@ namespace ltn
     types::global_dof_index n_local_dofs    = 0;
     types::global_dof_index n_controls      = 0;
     std::string             solver_method;
-    unsigned int            iterations = 0;
-    double                  residual   = 0;
-    /** CouplingSolution::true_residual (negative: not computed). */
-    double true_residual = -1;
-    /**
-     * The reduced-space preconditioner's explicit controls, coarse modes,
-     * setup time.
-     */
-    unsigned int explicit_controls            = 0;
-    unsigned int coarse_modes                 = 0;
-    double       preconditioner_setup_seconds = 0;
+    /** The solvers' statistics, as the solve reported them. */
+    SolverStatistics solver;
     /** The Collar layer weight the Control preconditioner used. */
     double collar_layer_weight = 0;
-    /** CouplingSolution::crack_opening_fields. */
-    unsigned int crack_opening_fields = 0;
-    /** CouplingSolution::nonlocal_block_unknowns. */
-    types::global_dof_index nonlocal_block_unknowns = 0;
-    /** CouplingSolution::standalone_seconds. */
-    double standalone_seconds = 0;
-    /** CouplingSolution::smallest_ritz_value and largest_ritz_value. */
-    double smallest_ritz_value = 0, largest_ritz_value = 0;
-    /**
-     * Per model (nonlocal, local): its own solver's solves, iterations,
-     * and wall time (rank 0's) in all, in operator products and in the
-     * preconditioner (ModelSolverStatistics).
-     */
-    std::array<unsigned int, 2> model_solves                 = {{0, 0}};
-    std::array<unsigned int, 2> model_iterations             = {{0, 0}};
-    std::array<double, 2>       model_seconds                = {{0, 0}};
-    std::array<double, 2>       model_operator_seconds       = {{0, 0}};
-    std::array<double, 2>       model_preconditioner_seconds = {{0, 0}};
-    /** A phase of the coupled solve and the model solves in it. */
-    struct SolvePhase
-    {
-      std::string                 name;
-      double                      seconds       = 0;
-      std::array<unsigned int, 2> solves        = {{0, 0}};
-      std::array<unsigned int, 2> iterations    = {{0, 0}};
-      std::array<double, 2>       solve_seconds = {{0, 0}};
-    };
-    /** The coupled solve's phases (reduced-space CG), in order. */
-    std::vector<SolvePhase> solve_phases;
     /**
      * Per model, bytes over all ranks for its operator, right-hand side and
      * solver (preconditioners; direct factorizations are not counted).

@@ -267,7 +267,7 @@ namespace ltn
             << " = " << record.n_nonlocal_dofs
             << ", local dofs = " << record.n_local_dofs
             << ", controls = " << record.n_controls
-            << ", iterations = " << record.iterations
+            << ", iterations = " << record.solver.iterations
             << ", J = " << std::scientific << std::setprecision(3)
             << record.mismatch_J << std::defaultfloat << std::endl
             << report;

@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <ltn/base/discrete_model.h>
+#include <ltn/base/solver_statistics.h>
 #include <ltn/coupling/system/overlap_quadrature.h>
 #include <ltn/model_solvers/model_solver.h>
 
@@ -142,67 +143,9 @@ namespace ltn
   };
 
   /** A solution of the optimality system, with the solver's statistics. */
-  struct CouplingSolution
+  struct CouplingSolution : SolverStatistics
   {
-    /** One phase of a solve: its wall time, each model's solves in it. */
-    struct Phase
-    {
-      std::string                          name;
-      double                               seconds = 0;
-      std::array<ModelSolverStatistics, 2> model_solvers;
-    };
-
     /** Each model's field on its owned degrees of freedom. */
     std::array<TrilinosWrappers::MPI::Vector, 2> fields;
-    unsigned int                                 iterations = 0;
-    /** The relative residual the solver reached. */
-    double residual = 0;
-    /**
-     * The reduced-space CG's true relative residual at its final controls
-     * (`residual` is its recursion's, which relaxed inner solves let drift
-     * from it); negative where not computed.
-     */
-    double true_residual = -1;
-    /**
-     * The controls whose Hessian block the preconditioner of the
-     * reduced-space CG holds explicitly (ControlPreconditioner); 0 without.
-     */
-    unsigned int explicit_controls = 0;
-    /**
-     * The coarse modes of its second level (DeflationSpace in the
-     * reduced-space CG, ControlCoarseSpace in the full-space GMRES); 0
-     * without.
-     */
-    unsigned int coarse_modes = 0;
-    /**
-     * Of those, the given fields (`ControlPreconditionerSettings::
-     * nonlocal_coarse_fields`) the polynomial columns did not already span.
-     */
-    unsigned int crack_opening_fields = 0;
-    /**
-     * The size of the saddle-point system that inverts the model of the
-     * nonlocal controls' Hessian block (SurrogateHessianBlock); 0 without.
-     */
-    types::global_dof_index nonlocal_block_unknowns = 0;
-    /** Wall time to build that preconditioner. */
-    double preconditioner_setup_seconds = 0;
-    /**
-     * The reduced-space CG's extreme Ritz values (RitzValues): estimates of
-     * the extreme eigenvalues of the reduced Hessian as its preconditioner
-     * and coarse space leave it; 0 without.
-     */
-    double smallest_ritz_value = 0, largest_ritz_value = 0;
-    /**
-     * Wall time of what solving each model once alone costs with the same
-     * solvers and tolerances: building both model solvers, and a forward
-     * solve of each from zero with its data and the final controls, after
-     * the coupled solve (the reduced-space CG, if asked to time them; else
-     * 0).
-     */
-    double standalone_seconds = 0;
-    /** Per model: its own solver's solves, iterations and memory. */
-    std::array<ModelSolverStatistics, 2> model_solvers;
-    /** The phases of the solve, in order (the reduced-space CG's). */
-    std::vector<Phase> phases;
   };
 } // namespace ltn
