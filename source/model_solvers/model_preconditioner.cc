@@ -83,13 +83,10 @@ namespace ltn
     // Coarsened until at most the model's surrogate_coarsest_rows are left:
     // 200 on a 3D lattice, not deal.II's 2000, whose coarse levels are
     // dense enough that the direct solve of a level of a thousand or more
-    // rows costs as much as the finest level's smoothing (the 3e4 bar of
-    // benchmarks/scaling, one rank: 17 % of the run in KLU's triangular
-    // solves; with the smaller coarsest level solves of 13.0 and 14.9 s
-    // against 17.7 and 19.6 s, 833 nonlocal CG iterations against 852).
-    // 2000 on a 2D lattice, whose coarse levels stay sparse: the plate of
-    // benchmarks/speed_accuracy at 1/1280 took 747 nonlocal CG iterations
-    // instead of 790.
+    // rows costs as much as the finest level's smoothing; 2000 on a 2D
+    // lattice, whose coarse levels stay sparse, so that a larger coarsest
+    // level saves iterations at little cost (measurements:
+    // benchmarks/scaling/HISTORY.md, "Figures code comments quoted").
     Teuchos::ParameterList              parameters;
     std::unique_ptr<Epetra_MultiVector> no_modes;
     data.set_parameters(parameters, no_modes, model.surrogate);
@@ -98,9 +95,7 @@ namespace ltn
     // One Chebyshev sweep on the surrogate, not the three of the FEM
     // matrices: what the V-cycle misses of the particle model is mostly its
     // difference from the surrogate, not the surrogate's smooth error
-    // ('Iterative model solvers': the 1e5 and 10^6 bars of
-    // benchmarks/scaling take 8 and
-    // 12 % more nonlocal CG iterations and 6 % less time).
+    // ('Iterative model solvers'): a few more iterations, each cheaper.
     parameters.set("smoother: sweeps", 1);
     // ML's finest level multiplies by the surrogate's stencil, not by its
     // compressed rows ('Iterative model solvers').
@@ -109,10 +104,8 @@ namespace ltn
     stencil = std::make_unique<StencilMatrix>(surrogate);
     if (!stencil->is_stencil() || !stencil->serve_finest_level(amg))
       stencil.reset();
-    // All components through one cycle ('Iterative model solvers'): on the
-    // 3e5 bar of
-    // benchmarks/scaling (two ranks) the preconditioner took 4.4-4.7 s
-    // instead of 7.0-7.2 s, with the same 527 nonlocal CG iterations.
+    // All components through one cycle ('Iterative model solvers'): one
+    // pass over the hierarchy for all of them, the same iterations.
     if (stencil)
       cycle = std::make_unique<ComponentVCycle>(amg,
                                                 surrogate,
@@ -120,9 +113,9 @@ namespace ltn
                                                 surrogate_components);
     if (cycle && !cycle->usable())
       cycle.reset();
-    // ML's own matrices of those levels, beside the cycle's copies: the
-    // 10^6 bar of benchmarks/scaling (two ranks) peaked at 4,939 MB with
-    // them, 4,830 MB without ('Iterative model solvers').
+    // ML's own matrices of those levels are released: the cycle keeps
+    // copies of its own, and two would only hold memory ('Iterative model
+    // solvers').
     if (cycle)
       cycle->release_ml_levels();
     node_in  = std::make_unique<Epetra_MultiVector>(surrogate.DomainMap(),
@@ -187,9 +180,8 @@ namespace ltn
     if (interleaved)
       {
         // One gather of all components and one scatter, without the copy
-        // and the index lists below (on the 3e5 bar of benchmarks/scaling
-        // the preconditioner took 6.9-7.2 s instead of 7.3-7.4 s); a gather
-        // and a scatter per component passed over the whole vector each.
+        // and the index lists below; a gather and a scatter per component
+        // passed over the whole vector each.
         const unsigned int    stride = surrogate_components;
         std::vector<double *> in(stride), out(stride);
         for (unsigned int c = 0; c < stride; ++c)

@@ -97,8 +97,8 @@ namespace ltn
             const double      *xi     = value(i);
             const double      *centre = &scaled_centres[s * block_size];
             // A running sum per entry of the block, as in apply_stencil():
-            // summed over b per bond, the rows took 9 % of a run of the 1e5
-            // bar in shuffles.
+            // summed over b per bond, the rows spent their time in vector
+            // shuffles.
             std::array<std::array<double, n_c>, n_c> own{}, partner{};
             for (int a = a0; a < a1; ++a)
               for (int b = 0; b < n_c; ++b)
@@ -234,8 +234,7 @@ namespace ltn
     // 12 registers (at most 6 sums for a group of one vector: the 2D
     // products, the 3D dilatation rows), else one: each tiled row vector is
     // then loaded once for two of the group's vectors, and each row has
-    // twice the chains. On the 2D plate the product took 17 % less time;
-    // with four vectors, no less than with two.
+    // twice the chains. Four vectors gain nothing over two.
     using Lanes = double __attribute__((vector_size(lanes * sizeof(double))));
     constexpr int          n_rows = a1 - a0;
     constexpr unsigned int group  = (n_rows * n_c <= 6 ? 2 : 1) * lanes;
@@ -357,7 +356,7 @@ namespace ltn
                 for (auto &row : sum)
                   row.fill(0.);
                 // Read per particle: hoisted out of the loops, it made GCC 12
-                // compile the transposed product 30 % slower.
+                // compile a slower transposed product.
                 const double *centre = &blocks[n_offsets * n_c * n_c];
                 if (!transpose)
                   {

@@ -184,10 +184,8 @@ namespace ltn
     // The identity rows (the collar's displacements, the dilatations of
     // particles with bonds leaving the lattice) apart from the matrices:
     // a product with them is a copy of owned values, where a matrix
-    // imported its columns, the collar's values, first (with it, Epetra's
-    // CopyAndPermute went from 4.8 % to 3.9 % of a run of the 1e5 bar of
-    // benchmarks/scaling on two ranks). They and the scaled rows are
-    // computed, not stored.
+    // imported its columns, the collar's values, first. They and the
+    // scaled rows are computed, not stored.
     std::vector<unsigned char> computed(end - first, 0);
     IndexSet                   stored(lattice.n_particles());
     ParticleRows               particle_rows;
@@ -254,7 +252,7 @@ namespace ltn
     // absent partner is never read). Clipped to the whole reached range
     // instead, an absent line (past the lattice's box) stretched a range
     // over all the rank's particles, and each product copied all owned
-    // values into `edges`: 3.3 % of a run of the 10^6 bar (perf).
+    // values into `edges`.
     const std::size_t n_offsets = offsets.size();
     const auto        reads     = [&](const std::size_t s) {
       std::int64_t lowest  = segment_start[s],
@@ -443,8 +441,8 @@ namespace ltn
         if (!has_own_rows[part])
           continue;
         // The stored rows only: over all owned rows, most of them empty,
-        // the products and their temporary vectors took 16 % of a run of
-        // the 1e5 bar (perf).
+        // the products and their temporary vectors cost far more than the
+        // few rows they hold.
         TrilinosWrappers::MPI::Vector &values  = own_rows_values[part];
         const auto                    &entries = own_rows_entries[part];
         if (transpose)

@@ -77,6 +77,15 @@ namespace ltn
     if (auto_scaled)
       choice.description = "auto for " + std::to_string(n_particle_unknowns) +
                            " particle unknowns: " + auto_choices;
+    const bool factorized =
+      !solvers.iterative() ||
+      (coupled && choice.coupling.method == CouplingMethod::full_space_direct);
+    if (scalable && factorized)
+      choice.note = "the particle model's " +
+                    std::to_string(n_particle_unknowns) +
+                    " unknowns are factorized by a direct solver; for scenes "
+                    "this large, doc/prm_guide.md (\"Large scenes\") gives "
+                    "settings that scale";
     // What the scene named, and what auto made of the rest, must agree.
     choice.coupling.check_operator(choice.matrix_free, coupled);
     return choice;

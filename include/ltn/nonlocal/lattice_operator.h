@@ -229,8 +229,8 @@ namespace ltn
      * holds the particles `[segment_start[s], segment_start[s + 1])`, and
      * its bond along `o_k` reaches as bond_lines() says, with
      * `origin = bond_origin[s n + k]`, `lo = bond_lo[s n + k]`,
-     * `hi = bond_hi[s n + k]` (`n` offsets). Built once: looked up in every
-     * product, line by line, it took 3.5 % of a run of the 1e5 bar.
+     * `hi = bond_hi[s n + k]` (`n` offsets). Built once, not looked up in
+     * every product line by line.
      */
     std::vector<types::global_dof_index> segment_start;
     std::vector<std::int64_t>            bond_origin, bond_lo, bond_hi;
@@ -307,8 +307,8 @@ namespace ltn
     /**
      * The pieces of `edges`, in order: `count` values from position `from`
      * of `ghosts` or (`from_ghosts` false) of the owned values, to position
-     * `to`. Epetra's import had copied the owned ones one by one through
-     * its permutation lists: 3 % of a run of the 3e5 bar on two ranks.
+     * `to`: Epetra's import would copy the owned ones one by one through
+     * its permutation lists.
      */
     struct EdgePiece
     {

@@ -19,34 +19,6 @@
 
 namespace ltn
 {
-  /**
-   * Tell a user whose particle model of @p n_unknowns will be factorized
-   * (by direct model solvers, or, @p coupled, in the `full space direct`
-   * system) where the settings that scale are, when it is large: from
-   * 50,000 unknowns on, the quick-start bar ran 14 times faster with them,
-   * the cracked plate 6 times (doc/prm_guide.md, "Large scenes"). The run
-   * goes on as asked.
-   */
-  inline void
-  note_large_factorized_particle_model(const types::global_dof_index n_unknowns,
-                                       const bool                    coupled,
-                                       const CouplingParameters     &coupling,
-                                       ConditionalOStream           &out)
-  {
-    constexpr types::global_dof_index large = 50000;
-    const bool                        factorized =
-      !coupling.model_solvers.iterative() ||
-      (coupled && coupling.method == CouplingMethod::full_space_direct);
-    if (factorized && n_unknowns >= large)
-      out << "note: the particle model's " << n_unknowns
-          << " unknowns are factorized by a direct solver; for scenes this "
-             "large, doc/prm_guide.md (\"Large scenes\") gives settings "
-             "that scale"
-          << std::endl;
-  }
-
-
-
   template <int dim>
   template <typename PhysicsOfLevel>
   RunSummary
@@ -150,6 +122,8 @@ namespace ltn
             if (!choice.description.empty())
               out << "level " << level << ": " << choice.description
                   << std::endl;
+            if (!choice.note.empty())
+              out << "note: " << choice.note << std::endl;
           }
         if (nonlocal && cycle == 0)
           {
@@ -175,12 +149,6 @@ namespace ltn
             timer.leave_subsection();
           }
         const CouplingParameters &coupling = choice.coupling;
-        if (dim > 1 && nonlocal && cycle == 0)
-          note_large_factorized_particle_model(
-            nonlocal->get_model().owned.size(),
-            local != nullptr,
-            coupling,
-            out);
         enter("solve");
         solution = solve_level(nonlocal ? &nonlocal->get_model() : nullptr,
                                local ? &local->get_model() : nullptr,

@@ -23,6 +23,13 @@ namespace ltn
      * only the exact path.
      */
     std::string description;
+    /**
+     * For a particle model from scalable_from_unknowns on that the scene's
+     * named choices factorize (direct model solvers, or the full-space
+     * direct system): where the settings that scale are. The run goes on as
+     * asked. Empty otherwise.
+     */
+    std::string note;
   };
 
   /**
