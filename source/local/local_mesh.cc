@@ -10,7 +10,9 @@
 
 #include <ltn/local/local_mesh.h>
 
+#include <array>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <vector>
 
@@ -42,8 +44,13 @@ namespace ltn
     unsigned int
     coarsening_steps(const Geometry<dim> &geometry, const double h)
     {
-      const Box<dim> hole    = geometry.shrunk_nonlocal_region();
-      const auto     aligned = [&](const double length, const double size) {
+      // The planes the coarse mesh must resolve: the faces of the part of
+      // Omega_n the local mesh leaves out.
+      std::array<std::vector<double>, dim> hole_faces;
+      if (geometry.has_nonlocal_model())
+        for (unsigned int d = 0; d < dim; ++d)
+          hole_faces[d] = geometry.nonlocal_region().shrunk_face_coordinates(d);
+      const auto aligned = [&](const double length, const double size) {
         const double n = length / size;
         return std::abs(n - std::round(n)) < 1e-8 * std::max(1., n);
       };
@@ -55,10 +62,9 @@ namespace ltn
           for (unsigned int d = 0; d < dim; ++d)
             {
               const double origin = geometry.body.lower[d];
-              fits = fits && aligned(geometry.body.upper[d] - origin, size) &&
-                     (!geometry.has_nonlocal_model() ||
-                      (aligned(hole.lower[d] - origin, size) &&
-                       aligned(hole.upper[d] - origin, size)));
+              fits = fits && aligned(geometry.body.upper[d] - origin, size);
+              for (const double face : hole_faces[d])
+                fits = fits && aligned(face - origin, size);
             }
           if (!fits)
             break;
@@ -67,21 +73,29 @@ namespace ltn
       return steps;
     }
 
-    /** The distance from @p cell to the box @p region (0 if they meet). */
+    /**
+     * The distance from @p cell to the nearest box of @p region (0 if they
+     * meet).
+     */
     template <int dim>
     double
     distance_to(const typename Triangulation<dim>::cell_iterator &cell,
-                const Box<dim>                                   &region)
+                const NonlocalRegion<dim>                        &region)
     {
       const auto [lower, upper] = cell->bounding_box().get_boundary_points();
-      double square             = 0;
-      for (unsigned int d = 0; d < dim; ++d)
+      double nearest            = std::numeric_limits<double>::infinity();
+      for (const auto &box : region.boxes())
         {
-          const double gap = std::max(
-            {0., region.lower[d] - upper[d], lower[d] - region.upper[d]});
-          square += gap * gap;
+          double square = 0;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              const double gap = std::max(
+                {0., box.lower[d] - upper[d], lower[d] - box.upper[d]});
+              square += gap * gap;
+            }
+          nearest = std::min(nearest, std::sqrt(square));
         }
-      return std::sqrt(square);
+      return nearest;
     }
   } // namespace
 
@@ -149,7 +163,7 @@ namespace ltn
           // one by one).
           for (const auto &cell : triangulation->active_cell_iterators())
             if (cell->is_locally_owned() &&
-                distance_to<dim>(cell, geometry.nonlocal_region) <
+                distance_to<dim>(cell, geometry.nonlocal_region()) <
                   graded_layers * 0.5 * cell->extent_in_direction(0) - tol)
               cell->set_refine_flag();
           triangulation->execute_coarsening_and_refinement();

@@ -51,37 +51,30 @@ namespace ltn
     // The range of numbers the bonds of this rank's particles reach.
     reach_first = first;
     reach_end   = end;
-    for (auto p = first; p < end;)
-      {
-        const LatticeIndex index = lattice.index(p);
-        const auto         line  = lattice.line(index);
-        for (const auto &o : offsets)
-          {
-            LatticeIndex neighbour = index;
-            for (unsigned int d = 0; d < dim; ++d)
-              neighbour[d] += o[d];
-            const auto other = lattice.line(neighbour);
-            if (other.begin == other.end)
-              continue;
-            // Particles p..min(line end, end) - 1 reach along this offset
-            // numbers origin + o_0 + i_0, clipped to the other line.
-            const std::int64_t from =
-              other.origin + o[0] +
-              (static_cast<std::int64_t>(p) - line.origin);
-            const std::int64_t to =
-              from + static_cast<std::int64_t>(std::min(line.end, end)) -
-              static_cast<std::int64_t>(p);
-            const std::int64_t lo = std::max<std::int64_t>(from, other.begin);
-            const std::int64_t hi = std::min<std::int64_t>(to, other.end);
-            if (lo < hi)
-              {
-                reach_first =
-                  std::min<types::global_dof_index>(reach_first, lo);
-                reach_end = std::max<types::global_dof_index>(reach_end, hi);
-              }
-          }
-        p = std::min(line.end, end);
-      }
+    {
+      std::vector<std::int64_t> origin(offsets.size());
+      std::vector<std::int64_t> lo(offsets.size()), hi(offsets.size());
+      for (auto p = first; p < end;)
+        {
+          const auto q = bond_lines(p, origin, lo, hi);
+          // Particles p..q - 1 reach along offset k the numbers origin_k +
+          // p..q - 1, clipped to [lo_k, hi_k).
+          for (std::size_t k = 0; k < offsets.size(); ++k)
+            {
+              const std::int64_t from =
+                std::max<std::int64_t>(origin[k] + std::int64_t(p), lo[k]);
+              const std::int64_t to =
+                std::min<std::int64_t>(origin[k] + std::int64_t(q), hi[k]);
+              if (from < to)
+                {
+                  reach_first =
+                    std::min<types::global_dof_index>(reach_first, from);
+                  reach_end = std::max<types::global_dof_index>(reach_end, to);
+                }
+            }
+          p = q;
+        }
+    }
 
     all_rows = (1u << n_components) - 1;
     shared.resize(reach_end - reach_first);
@@ -359,6 +352,10 @@ namespace ltn
   {
     const LatticeIndex index = lattice.index(p);
     const auto         line  = lattice.line(index);
+    // The segment ends with the run of p, or where a neighbour along some
+    // offset would enter the next run of its line: beyond that point the
+    // neighbours' numbers no longer follow origin_k + i.
+    types::global_dof_index segment_end = std::min(line.end, end);
     for (unsigned int k = 0; k < offsets.size(); ++k)
       {
         LatticeIndex neighbour = index;
@@ -368,8 +365,11 @@ namespace ltn
         origin[k]        = other.origin + offsets[k][0] - line.origin;
         lo[k]            = other.begin;
         hi[k]            = other.end;
+        if (other.next_first != std::numeric_limits<int>::max())
+          segment_end = std::min<types::global_dof_index>(
+            segment_end, line.origin + other.next_first - offsets[k][0]);
       }
-    return std::min(line.end, end);
+    return segment_end;
   }
 
 

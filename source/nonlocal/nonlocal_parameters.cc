@@ -143,18 +143,28 @@ namespace ltn
                 to_string(spacing_ratio),
                 "the particle spacing " + to_string(spacing) +
                   " must not exceed the horizon " + to_string(eps));
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        const double n = (geometry.nonlocal_region.upper[d] -
-                          geometry.nonlocal_region.lower[d]) /
-                         spacing;
-        check_input(std::abs(n - std::round(n)) < 1e-8 * n,
-                    "Nonlocal model/Particle spacing to mesh size ratio",
-                    to_string(spacing_ratio),
-                    "the particle spacing " + to_string(spacing) +
-                      " must divide the nonlocal region's extent " +
-                      to_string(n * spacing) + " a whole number of times");
-      }
+    // The lattice's cells fill every box: the spacing divides each box's
+    // extent and its offset from the lower corner of the boxes' bounding
+    // box (the lattice's origin).
+    const auto &region = geometry.nonlocal_region();
+    const auto  origin = region.bounding_box().lower;
+    for (const auto &box : region.boxes())
+      for (unsigned int d = 0; d < dim; ++d)
+        for (const auto &[length, what] :
+             {std::make_pair(box.upper[d] - box.lower[d],
+                             std::string("the nonlocal region's extent ")),
+              std::make_pair(box.lower[d] - origin[d],
+                             std::string("the offset between the nonlocal "
+                                         "region's boxes "))})
+          {
+            const double n = length / spacing;
+            check_input(std::abs(n - std::round(n)) < 1e-8 * std::max(n, 1.),
+                        "Nonlocal model/Particle spacing to mesh size ratio",
+                        to_string(spacing_ratio),
+                        "the particle spacing " + to_string(spacing) +
+                          " must divide " + what + to_string(n * spacing) +
+                          " a whole number of times");
+          }
   }
 
   template <int dim>
@@ -167,14 +177,18 @@ namespace ltn
     const MPI_Comm       communicator) const
   {
     const double spacing = particle_spacing(h);
-    // The lattice spans the nonlocal region and its collar: an upper bound
-    // of the particles it holds (the collar's corners are cut off).
-    double particles = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      particles *= std::round((geometry.nonlocal_region.upper[d] -
-                               geometry.nonlocal_region.lower[d]) /
-                              spacing) +
-                   2 * std::ceil(collar_horizons * horizon(h) / spacing);
+    // The lattice spans each box of the nonlocal region and its collar: an
+    // upper bound of the particles it holds (the collar's corners are cut
+    // off, and collars of boxes overlap).
+    double particles = 0;
+    for (const auto &box : geometry.nonlocal_region().boxes())
+      {
+        double in_box = 1;
+        for (unsigned int d = 0; d < dim; ++d)
+          in_box *= std::round((box.upper[d] - box.lower[d]) / spacing) +
+                    2 * std::ceil(collar_horizons * horizon(h) / spacing);
+        particles += in_box;
+      }
     const double      unknowns = particles * unknowns_per_particle;
     const std::string parameter =
       "Nonlocal model/Particle spacing to mesh size ratio";

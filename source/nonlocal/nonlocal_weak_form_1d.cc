@@ -70,8 +70,10 @@ namespace ltn
     , fe(degree)
     , dof_handler(triangulation)
   {
-    const double a = geometry.nonlocal_region.lower[0];
-    const double b = geometry.nonlocal_region.upper[0];
+    // One box in 1D (Geometry::parse_parameters()).
+    const Box<1> region = geometry.nonlocal_region().bounding_box();
+    const double a      = region.lower[0];
+    const double b      = region.upper[0];
     const auto   n_collar =
       static_cast<unsigned int>(std::ceil(kernel.horizon() / h - 1e-10));
     const auto n_inside = static_cast<unsigned int>(std::round((b - a) / h));
@@ -96,7 +98,7 @@ namespace ltn
     model.fixed        = IndexSet(n);
     const double tol   = 1e-10 * h;
     for (types::global_dof_index i = 0; i < n; ++i)
-      if (!geometry.nonlocal_region.contains_strictly(support_points[i], tol))
+      if (!geometry.nonlocal_region().contains_strictly(support_points[i], tol))
         (geometry.nonlocal_region_of(support_points[i], 0) ==
              Region::physical_collar ?
            model.fixed :
@@ -303,7 +305,7 @@ namespace ltn
                             update_JxW_values);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (geometry.nonlocal_region.contains_strictly(cell->center()))
+      if (geometry.nonlocal_region().contains_strictly(cell->center(), 0))
         {
           fe_values.reinit(cell);
           cell->get_dof_indices(dofs);
@@ -358,7 +360,7 @@ namespace ltn
   {
     const double tol = geometry.tolerance();
     return field_errors<1>(dof_handler, field, exact, [&](const Point<1> &p) {
-      return geometry.nonlocal_region.contains_strictly(p, tol);
+      return geometry.nonlocal_region().contains_strictly(p, tol);
     });
   }
 } // namespace ltn

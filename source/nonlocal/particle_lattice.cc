@@ -8,19 +8,55 @@
 namespace ltn
 {
   template <int dim>
-  ParticleLattice<dim>::ParticleLattice(const Box<dim> &region,
-                                        const double    spacing,
+  std::size_t
+  ParticleLattice<dim>::Intervals::find(const std::size_t l, const int x) const
+  {
+    std::size_t r = line_begin[l];
+    while (r < line_begin[l + 1] && end[r] <= x)
+      ++r;
+    return r;
+  }
+
+
+
+  template <int dim>
+  types::global_dof_index
+  ParticleLattice<dim>::Intervals::total() const
+  {
+    return start.empty() ? 0 : start.back() + (end.back() - first.back());
+  }
+
+
+
+  template <int dim>
+  ParticleLattice<dim>::ParticleLattice(const NonlocalRegion<dim> &region,
+                                        const double               spacing,
                                         const std::vector<LatticeIndex> &reach)
-    : origin(region.lower)
+    : origin(region.bounding_box().lower)
     , spacing(spacing)
     , radius(0)
   {
     for (const auto &offset : reach)
       for (unsigned int d = 0; d < dim; ++d)
         radius = std::max(radius, std::abs(offset[d]));
+    const Box<dim> bounds = region.bounding_box();
     for (unsigned int d = 0; d < dim; ++d)
       n[d] = static_cast<int>(
-        std::round((region.upper[d] - region.lower[d]) / spacing));
+        std::round((bounds.upper[d] - bounds.lower[d]) / spacing));
+    // Each box's cells [lo_d, hi_d) in lattice indices.
+    std::vector<std::pair<LatticeIndex, LatticeIndex>> boxes;
+    for (const auto &box : region.boxes())
+      {
+        LatticeIndex lo, hi;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lo[d] = static_cast<int>(
+              std::round((box.lower[d] - origin[d]) / spacing));
+            hi[d] = static_cast<int>(
+              std::round((box.upper[d] - origin[d]) / spacing));
+          }
+        boxes.emplace_back(lo, hi);
+      }
 
     const std::set<LatticeIndex> reached(reach.begin(), reach.end());
     const auto                   is_reached = [&](const LatticeIndex &offset) {
@@ -29,42 +65,78 @@ namespace ltn
                return o == 0;
              });
     };
+    // Sorted, touching or overlapping intervals merged, appended as the
+    // intervals of the next line.
+    const auto append = [](Intervals                        &intervals,
+                           std::vector<std::pair<int, int>> &line,
+                           const std::size_t                 line_number) {
+      std::sort(line.begin(), line.end());
+      for (std::size_t k = 0; k < line.size(); ++k)
+        if (k > 0 && line[k].first <= intervals.end.back() &&
+            intervals.line_begin.back() < intervals.first.size())
+          intervals.end.back() = std::max(intervals.end.back(), line[k].second);
+        else
+          {
+            intervals.start.push_back(intervals.total());
+            intervals.first.push_back(line[k].first);
+            intervals.end.push_back(line[k].second);
+            intervals.line.push_back(line_number);
+          }
+      intervals.line_begin.push_back(intervals.first.size());
+    };
 
     std::size_t n_lines = 1;
     for (unsigned int d = 1; d < dim; ++d)
       n_lines *= n[d] + 2 * radius;
-    line_start.assign(1, 0);
+    runs.line_begin        = {0};
+    inside_runs.line_begin = {0};
+    std::vector<std::pair<int, int>> present, inside_line;
     for (std::size_t line = 0; line < n_lines; ++line)
       {
-        // The offset of the line from Omega_n in the directions 1..dim-1.
-        LatticeIndex offset;
+        LatticeIndex i;
         std::size_t  rest = line;
         for (unsigned int d = 1; d < dim; ++d)
           {
-            const int i = static_cast<int>(rest % (n[d] + 2 * radius)) - radius;
+            i[d] = static_cast<int>(rest % (n[d] + 2 * radius)) - radius;
             rest /= n[d] + 2 * radius;
-            offset[d] = i - std::clamp(i, 0, n[d] - 1);
           }
-        // The largest offset along x that is reached; all smaller ones must
-        // be too, or numbering by lines would not work.
-        int reach_x = -1;
-        for (int o = 0; o <= radius; ++o)
+        present.clear();
+        inside_line.clear();
+        for (const auto &[lo, hi] : boxes)
           {
-            offset[0] = o;
-            if (!is_reached(offset))
-              break;
-            reach_x = o;
+            // The offset of the line from the box in the directions
+            // 1..dim-1.
+            LatticeIndex offset;
+            bool         through_box = true;
+            for (unsigned int d = 1; d < dim; ++d)
+              {
+                offset[d]   = i[d] - std::clamp(i[d], lo[d], hi[d] - 1);
+                through_box = through_box && offset[d] == 0;
+              }
+            if (through_box)
+              inside_line.emplace_back(lo[0], hi[0]);
+            // The largest offset along x that is reached; all smaller ones
+            // must be too, or the box's particles on the line would not be
+            // one run.
+            int reach_x = -1;
+            for (int o = 0; o <= radius; ++o)
+              {
+                offset[0] = o;
+                if (!is_reached(offset))
+                  break;
+                reach_x = o;
+              }
+            for (int o = reach_x + 1; o <= radius; ++o)
+              {
+                offset[0] = o;
+                AssertThrow(!is_reached(offset),
+                            ExcMessage("the stencil is not convex along x"));
+              }
+            if (reach_x >= 0)
+              present.emplace_back(lo[0] - reach_x, hi[0] + reach_x);
           }
-        for (int o = reach_x + 1; o <= radius; ++o)
-          {
-            offset[0] = o;
-            AssertThrow(!is_reached(offset),
-                        ExcMessage("the stencil is not convex along x"));
-          }
-        first_x.push_back(reach_x < 0 ? 0 : -reach_x);
-        end_x.push_back(reach_x < 0 ? 0 : n[0] + reach_x);
-        line_start.push_back(line_start.back() +
-                             (end_x.back() - first_x.back()));
+        append(runs, present, line);
+        append(inside_runs, inside_line, line);
       }
   }
 
@@ -74,7 +146,7 @@ namespace ltn
   types::global_dof_index
   ParticleLattice<dim>::n_particles() const
   {
-    return line_start.back();
+    return runs.total();
   }
 
 
@@ -101,9 +173,12 @@ namespace ltn
   ParticleLattice<dim>::number(const LatticeIndex &index) const
   {
     const std::size_t line = line_of(index);
-    if (line == invalid || index[0] < first_x[line] || index[0] >= end_x[line])
+    if (line == invalid)
       return invalid;
-    return line_start[line] + (index[0] - first_x[line]);
+    const std::size_t r = runs.find(line, index[0]);
+    if (r == runs.line_begin[line + 1] || runs.first[r] > index[0])
+      return invalid;
+    return runs.start[r] + (index[0] - runs.first[r]);
   }
 
 
@@ -115,9 +190,16 @@ namespace ltn
     const std::size_t l = line_of(index);
     if (l == invalid)
       return {};
-    return {static_cast<std::int64_t>(line_start[l]) - first_x[l],
-            line_start[l],
-            line_start[l + 1]};
+    const std::size_t r = runs.find(l, index[0]);
+    if (r == runs.line_begin[l + 1])
+      return {};
+    Line result;
+    result.origin = static_cast<std::int64_t>(runs.start[r]) - runs.first[r];
+    result.begin  = runs.start[r];
+    result.end    = runs.start[r] + (runs.end[r] - runs.first[r]);
+    if (r + 1 < runs.line_begin[l + 1])
+      result.next_first = runs.first[r + 1];
+    return result;
   }
 
 
@@ -127,12 +209,12 @@ namespace ltn
   ParticleLattice<dim>::index(const types::global_dof_index number) const
   {
     AssertIndexRange(number, n_particles());
-    const std::size_t line =
-      std::upper_bound(line_start.begin(), line_start.end(), number) -
-      line_start.begin() - 1;
+    const std::size_t r =
+      std::upper_bound(runs.start.begin(), runs.start.end(), number) -
+      runs.start.begin() - 1;
     LatticeIndex result;
-    result[0] = first_x[line] + static_cast<int>(number - line_start[line]);
-    std::size_t rest = line;
+    result[0]        = runs.first[r] + static_cast<int>(number - runs.start[r]);
+    std::size_t rest = runs.line[r];
     for (unsigned int d = 1; d < dim; ++d)
       {
         result[d] = static_cast<int>(rest % (n[d] + 2 * radius)) - radius;
@@ -159,10 +241,12 @@ namespace ltn
   bool
   ParticleLattice<dim>::inside(const LatticeIndex &index) const
   {
-    for (unsigned int d = 0; d < dim; ++d)
-      if (index[d] < 0 || index[d] >= n[d])
-        return false;
-    return true;
+    const std::size_t line = line_of(index);
+    if (line == invalid)
+      return false;
+    const std::size_t r = inside_runs.find(line, index[0]);
+    return r < inside_runs.line_begin[line + 1] &&
+           inside_runs.first[r] <= index[0];
   }
 
 
@@ -171,10 +255,7 @@ namespace ltn
   types::global_dof_index
   ParticleLattice<dim>::n_inside() const
   {
-    types::global_dof_index count = 1;
-    for (unsigned int d = 0; d < dim; ++d)
-      count *= n[d];
-    return count;
+    return inside_runs.total();
   }
 
 
@@ -184,10 +265,8 @@ namespace ltn
   ParticleLattice<dim>::inside_number(const LatticeIndex &index) const
   {
     Assert(inside(index), ExcInternalError());
-    types::global_dof_index number = 0;
-    for (int d = dim - 1; d >= 0; --d)
-      number = number * n[d] + index[d];
-    return number;
+    const std::size_t r = inside_runs.find(line_of(index), index[0]);
+    return inside_runs.start[r] + (index[0] - inside_runs.first[r]);
   }
 
 

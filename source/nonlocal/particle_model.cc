@@ -22,7 +22,7 @@ namespace ltn
     , spacing(spacing)
     , collar_depth(collar_depth)
     , stencil(kernel, spacing)
-    , lattice(geometry.nonlocal_region, spacing, reach(stencil))
+    , lattice(geometry.nonlocal_region(), spacing, reach(stencil))
   {
     owned_particles = even_partition(lattice.n_particles(), communicator);
     const types::global_dof_index n_dofs_all =

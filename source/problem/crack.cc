@@ -225,33 +225,39 @@ namespace ltn
           "a crack reaching from (" + to_string(box.lower[0]) + ", " +
           to_string(box.lower[1]) + ", ...) to (" + to_string(box.upper[0]) +
           ", " + to_string(box.upper[1]) + ", ...)";
+        const NonlocalRegion<dim> &region = geometry.nonlocal_region();
         check_input(geometry.has_nonlocal_model() &&
-                      geometry.nonlocal_region.contains(box.lower, tol) &&
-                      geometry.nonlocal_region.contains(box.upper, tol),
+                      region.contains(box.lower, tol) &&
+                      region.contains(box.upper, tol),
                     "Cracks/Corners",
                     extent,
                     "cracks inside the nonlocal region (Geometry/Nonlocal "
                     "region lower/upper corner): the local model has none");
         // The local model covers the overlap, uncracked: a crack there
         // would have the coupling match a cracked field to an uncracked one.
-        const Box<dim> uncoupled = geometry.shrunk_nonlocal_region();
+        std::string within = "Geometry/Overlap width on its faces inside the "
+                             "body";
+        if (region.boxes().size() == 1)
+          {
+            // One box: S is a box, which the message names.
+            const auto x = region.shrunk_extent(0), y = region.shrunk_extent(1);
+            if (x.size() == 1 && y.size() == 1)
+              within += ", from (" + to_string(x[0].first) + ", " +
+                        to_string(y[0].first) + ", ...) to (" +
+                        to_string(x[0].second) + ", " + to_string(y[0].second) +
+                        ", ...)";
+          }
         check_input(!geometry.has_local_model() ||
-                      (uncoupled.contains(box.lower, tol) &&
-                       uncoupled.contains(box.upper, tol)),
+                      region.shrunk_region_contains(box),
                     "Cracks/Corners",
                     extent,
                     "cracks outside the overlap, which the local model covers "
-                    "uncracked: within the nonlocal region shrunk by "
-                    "Geometry/Overlap width on its faces inside the body, "
-                    "from (" +
-                      to_string(uncoupled.lower[0]) + ", " +
-                      to_string(uncoupled.lower[1]) + ", ...) to (" +
-                      to_string(uncoupled.upper[0]) + ", " +
-                      to_string(uncoupled.upper[1]) + ", ...)");
+                    "uncracked: within the nonlocal region shrunk by " +
+                      within);
         // The lattice points x = lower + (i + 1/2) h near the crack.
         for (const double h : spacings)
           {
-            const Point<dim>     origin = geometry.nonlocal_region.lower;
+            const Point<dim>     origin = region.bounding_box().lower;
             std::array<int, dim> lo, hi, i;
             for (unsigned int d = 0; d < dim; ++d)
               {

@@ -6,45 +6,6 @@
 
 namespace ltn
 {
-  template <int dim>
-  bool
-  Box<dim>::contains(const Point<dim> &p, const double tolerance) const
-  {
-    for (unsigned int d = 0; d < dim; ++d)
-      if (p[d] < lower[d] - tolerance || p[d] > upper[d] + tolerance)
-        return false;
-    return true;
-  }
-
-
-
-  template <int dim>
-  bool
-  Box<dim>::contains_strictly(const Point<dim> &p, const double tolerance) const
-  {
-    for (unsigned int d = 0; d < dim; ++d)
-      if (p[d] <= lower[d] + tolerance || p[d] >= upper[d] - tolerance)
-        return false;
-    return true;
-  }
-
-
-
-  template <int dim>
-  double
-  Box<dim>::distance(const Point<dim> &p) const
-  {
-    double squared = 0;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        const double outside = std::max({lower[d] - p[d], p[d] - upper[d], 0.});
-        squared += outside * outside;
-      }
-    return std::sqrt(squared);
-  }
-
-
-
   namespace
   {
     template <int dim>
@@ -123,6 +84,17 @@ namespace ltn
                         "1",
                         Patterns::List(Patterns::Double(), 1, 3),
                         "Upper corner of the nonlocal region Omega_n.");
+      prm.declare_entry(
+        "Nonlocal regions",
+        "",
+        Patterns::Anything(),
+        "The nonlocal region Omega_n as a union of boxes, `;`-separated, "
+        "each its lower corner then its upper corner (2D: `x0,y0,x1,y1`; "
+        "3D: `x0,y0,z0,x1,y1,z1`). The boxes' interiors must be disjoint; "
+        "they may touch (L- and T-shapes): no overlap band lies where they "
+        "do. Not empty, it replaces the one box of `Nonlocal region "
+        "lower/upper corner` (so a scene file's box can be changed from the "
+        "command line). 1D: one box.");
       prm.declare_entry("Models",
                         "coupled",
                         Patterns::Selection("coupled|nonlocal only|local only"),
@@ -145,27 +117,114 @@ namespace ltn
 
 
 
+  namespace
+  {
+    /** The boxes of `Geometry/Nonlocal regions` (V1 of the derivation). */
+    template <int dim>
+    std::vector<Box<dim>>
+    parse_boxes(const std::string &text)
+    {
+      const std::string     parameter = "Geometry/Nonlocal regions";
+      std::vector<Box<dim>> boxes;
+      for (const std::string &item : Utilities::split_string_list(text, ';'))
+        {
+          const std::vector<std::string> numbers =
+            Utilities::split_string_list(item, ',');
+          check_input(numbers.size() == 2 * dim,
+                      parameter,
+                      item,
+                      "boxes of " + std::to_string(2 * dim) +
+                        " comma-separated numbers each (the lower corner, "
+                        "then the upper corner), separated by `;`");
+          Box<dim> box;
+          for (unsigned int d = 0; d < 2 * dim; ++d)
+            {
+              double value = 0;
+              try
+                {
+                  std::size_t end = 0;
+                  value           = std::stod(numbers[d], &end);
+                  check_input(end == numbers[d].size(), parameter, item, "");
+                }
+              catch (const std::exception &)
+                {
+                  throw InputError(parameter,
+                                   item,
+                                   "boxes of numbers (the lower corner, then "
+                                   "the upper corner)");
+                }
+              (d < dim ? box.lower[d] : box.upper[d - dim]) = value;
+            }
+          for (unsigned int d = 0; d < dim; ++d)
+            check_input(box.upper[d] > box.lower[d],
+                        parameter,
+                        item,
+                        "each box's upper corner above its lower corner in "
+                        "every coordinate");
+          boxes.push_back(box);
+        }
+      check_input(dim > 1 || boxes.size() == 1,
+                  parameter,
+                  text,
+                  "one box in 1D");
+      return boxes;
+    }
+  } // namespace
+
+
+
   template <int dim>
   void
   Geometry<dim>::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
     {
-      body.lower = parse_point<dim>(prm, "Body lower corner", "Geometry");
-      body.upper = parse_point<dim>(prm, "Body upper corner", "Geometry");
-      nonlocal_region.lower =
-        parse_point<dim>(prm, "Nonlocal region lower corner", "Geometry");
-      nonlocal_region.upper =
-        parse_point<dim>(prm, "Nonlocal region upper corner", "Geometry");
-      overlap_width            = prm.get_double("Overlap width");
+      body.lower    = parse_point<dim>(prm, "Body lower corner", "Geometry");
+      body.upper    = parse_point<dim>(prm, "Body upper corner", "Geometry");
+      overlap_width = prm.get_double("Overlap width");
       const std::string choice = prm.get("Models");
       models = (choice == "nonlocal only") ? Models::nonlocal_only :
                (choice == "local only")    ? Models::local_only :
                                              Models::coupled;
+      const std::string     list = prm.get("Nonlocal regions");
+      std::vector<Box<dim>> boxes;
+      if (Utilities::trim(list).empty())
+        {
+          Box<dim> box;
+          box.lower =
+            parse_point<dim>(prm, "Nonlocal region lower corner", "Geometry");
+          box.upper =
+            parse_point<dim>(prm, "Nonlocal region upper corner", "Geometry");
+          boxes = {box};
+        }
+      else
+        {
+          boxes         = parse_boxes<dim>(list);
+          given_as_list = true;
+        }
       if (models == Models::nonlocal_only)
-        nonlocal_region = body;
+        boxes = {body};
+      set_nonlocal_boxes(boxes);
     }
     prm.leave_subsection();
+  }
+
+
+
+  template <int dim>
+  void
+  Geometry<dim>::set_nonlocal_boxes(const std::vector<Box<dim>> &boxes)
+  {
+    region = NonlocalRegion<dim>(body, boxes, overlap_width, tolerance());
+  }
+
+
+
+  template <int dim>
+  const NonlocalRegion<dim> &
+  Geometry<dim>::nonlocal_region() const
+  {
+    return region;
   }
 
 
@@ -192,22 +251,34 @@ namespace ltn
                   point_to_string(&body.upper[0], dim),
                   "every coordinate must exceed the body lower corner's (" +
                     point_to_string(&body.lower[0], dim) + ")");
-    for (unsigned int d = 0; d < dim; ++d)
-      check_input(nonlocal_region.upper[d] > nonlocal_region.lower[d],
-                  "Geometry/Nonlocal region upper corner",
-                  point_to_string(&nonlocal_region.upper[0], dim),
-                  "every coordinate must exceed the nonlocal region lower "
-                  "corner's");
-    check_input(body.contains(nonlocal_region.lower, tol),
-                "Geometry/Nonlocal region lower corner",
-                point_to_string(&nonlocal_region.lower[0], dim),
-                "the nonlocal region must lie inside the body " +
-                  box_to_string(body));
-    check_input(body.contains(nonlocal_region.upper, tol),
-                "Geometry/Nonlocal region upper corner",
-                point_to_string(&nonlocal_region.upper[0], dim),
-                "the nonlocal region must lie inside the body " +
-                  box_to_string(body));
+    const std::vector<Box<dim>> &boxes = region.boxes();
+    // Errors name the parameter the user wrote: the list, or a corner.
+    const auto parameter = [&](const std::string &corner) {
+      return given_as_list ? std::string("Geometry/Nonlocal regions") :
+                             "Geometry/Nonlocal region " + corner + " corner";
+    };
+    const auto box_text = [&](const Box<dim> &box, const std::string &corner) {
+      return given_as_list ? box_to_string(box) :
+                             point_to_string(corner == "lower" ? &box.lower[0] :
+                                                                 &box.upper[0],
+                                             dim);
+    };
+    for (const auto &box : boxes)
+      {
+        for (unsigned int d = 0; d < dim; ++d)
+          check_input(box.upper[d] > box.lower[d],
+                      parameter("upper"),
+                      box_text(box, "upper"),
+                      "every coordinate must exceed the nonlocal region lower "
+                      "corner's");
+        for (const std::string corner : {"lower", "upper"})
+          check_input(body.contains(corner == "lower" ? box.lower : box.upper,
+                                    tol),
+                      parameter(corner),
+                      box_text(box, corner),
+                      "the nonlocal region must lie inside the body " +
+                        box_to_string(body));
+      }
 
     if (models != Models::coupled)
       {
@@ -221,12 +292,25 @@ namespace ltn
         return;
       }
 
-    bool has_interior_face = false;
-    for (unsigned int f = 0; f < 2 * dim; ++f)
-      has_interior_face |= !nonlocal_face_on_body_boundary(f);
-    check_input(has_interior_face,
-                "Geometry/Nonlocal region upper corner",
-                point_to_string(&nonlocal_region.upper[0], dim),
+    // Interiors pairwise disjoint: a box overlapping another would count
+    // its particles twice.
+    for (std::size_t a = 0; a < boxes.size(); ++a)
+      for (std::size_t b = a + 1; b < boxes.size(); ++b)
+        {
+          bool apart = false;
+          for (unsigned int d = 0; d < dim; ++d)
+            apart = apart || boxes[a].upper[d] <= boxes[b].lower[d] + tol ||
+                    boxes[b].upper[d] <= boxes[a].lower[d] + tol;
+          check_input(apart,
+                      "Geometry/Nonlocal regions",
+                      box_to_string(boxes[a]) + " and " +
+                        box_to_string(boxes[b]),
+                      "boxes whose interiors do not overlap (they may touch)");
+        }
+
+    check_input(!region.covers_body(),
+                parameter("upper"),
+                box_text(boxes.back(), "upper"),
                 "the nonlocal region covers the whole body, which leaves no "
                 "local region to couple to; it needs a face inside the body "
                 "(or set Geometry/Models = nonlocal only)");
@@ -244,39 +328,97 @@ namespace ltn
                 "of the coarsest level: " +
                   to_string(h) + ")");
 
-    const Box<dim> shrunk = shrunk_nonlocal_region();
-    for (unsigned int d = 0; d < dim; ++d)
-      check_input(shrunk.upper[d] - shrunk.lower[d] > tol,
-                  "Geometry/Overlap width",
-                  to_string(overlap_width),
-                  "the overlap bands inside the nonlocal region's faces must "
-                  "leave part of it to the nonlocal model alone: the width "
-                  "must be less than the region's extent " +
-                    to_string(nonlocal_region.upper[d] -
-                              nonlocal_region.lower[d]) +
-                    " (half of it where both faces lie inside the body)");
-    for (unsigned int f = 0; f < 2 * dim; ++f)
-      if (!nonlocal_face_on_body_boundary(f))
-        {
-          const unsigned int d = f / 2;
-          // The control collar (and the nonlocal mesh covering it) must stay
-          // inside the body: it is where the local model observes u_n.
-          const double room = (f % 2 == 0) ?
-                                nonlocal_region.lower[d] - body.lower[d] :
-                                body.upper[d] - nonlocal_region.upper[d];
-          check_input(interaction_range <= room + tol,
-                      "Nonlocal model/Horizon",
-                      to_string(horizon),
-                      "the collar beyond face " + face_name(f) +
-                        " of the nonlocal region must fit inside the body: "
-                        "it is " +
-                        to_string(interaction_range) +
-                        " deep for this horizon (on the coarsest level), "
-                        "the room there is " +
-                        to_string(room) +
-                        " (set by `Horizon`, or by `Horizon to mesh size "
-                        "ratio` times the mesh size)");
-        }
+    if (!given_as_list)
+      {
+        const Box<dim> &box = boxes.front();
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            unsigned int bands = 0;
+            for (const unsigned int f : {2 * d, 2 * d + 1})
+              bands += !region.touches_body_face(f);
+            check_input(box.upper[d] - box.lower[d] - bands * overlap_width >
+                          tol,
+                        "Geometry/Overlap width",
+                        to_string(overlap_width),
+                        "the overlap bands inside the nonlocal region's "
+                        "faces must leave part of it to the nonlocal model "
+                        "alone: the width must be less than the region's "
+                        "extent " +
+                          to_string(box.upper[d] - box.lower[d]) +
+                          " (half of it where both faces lie inside the "
+                          "body)");
+          }
+      }
+    else
+      {
+        // A box thinner than the band is all band on its own: the user
+        // meant to move a face of its neighbour instead.
+        for (const auto &box : boxes)
+          for (unsigned int d = 0; d < dim; ++d)
+            check_input(box.upper[d] - box.lower[d] >= overlap_width - tol,
+                        "Geometry/Nonlocal regions",
+                        box_to_string(box),
+                        "boxes at least as thick as Geometry/Overlap width (" +
+                          to_string(overlap_width) + ") in every direction");
+        check_input(region.every_piece_has_shrunk_part(),
+                    "Geometry/Overlap width",
+                    to_string(overlap_width),
+                    "the overlap bands must leave part of every connected "
+                    "piece of the nonlocal region to the nonlocal model "
+                    "alone: a narrower band, or larger boxes");
+      }
+
+    // The control collar (and the nonlocal model covering it) must stay
+    // inside the body beyond every face of Omega_n with part of the body
+    // outside Omega_n beyond it: it is where the local model observes u_n.
+    for (const auto &box : boxes)
+      for (unsigned int f = 0; f < 2 * dim; ++f)
+        if (region.face_is_exposed(box, f))
+          {
+            const unsigned int d = f / 2;
+            const double room    = (f % 2 == 0) ? box.lower[d] - body.lower[d] :
+                                                  body.upper[d] - box.upper[d];
+            check_input(interaction_range <= room + tol,
+                        "Nonlocal model/Horizon",
+                        to_string(horizon),
+                        "the collar beyond face " + face_name(f) +
+                          " of the nonlocal region" +
+                          (boxes.size() > 1 ?
+                             " (box " + box_to_string(box) + ")" :
+                             std::string()) +
+                          " must fit inside the body: it is " +
+                          to_string(interaction_range) +
+                          " deep for this horizon (on the coarsest level), "
+                          "the room there is " +
+                          to_string(room) +
+                          " (set by `Horizon`, or by `Horizon to mesh size "
+                          "ratio` times the mesh size)");
+          }
+
+    // Along an axis, the body between two boxes is as wide as the collar
+    // at least: the collar's layers beyond a face (the surrogate of the
+    // control block walks them) do not re-enter Omega_n.
+    for (std::size_t a = 0; a < boxes.size(); ++a)
+      for (std::size_t b = 0; b < boxes.size(); ++b)
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            bool facing = true;
+            for (unsigned int e = 0; e < dim; ++e)
+              if (e != d)
+                facing = facing &&
+                         boxes[a].lower[e] < boxes[b].upper[e] - tol &&
+                         boxes[b].lower[e] < boxes[a].upper[e] - tol;
+            const double gap = boxes[b].lower[d] - boxes[a].upper[d];
+            check_input(!facing || gap <= tol || gap >= interaction_range - tol,
+                        "Geometry/Nonlocal regions",
+                        box_to_string(boxes[a]) + " and " +
+                          box_to_string(boxes[b]),
+                        "boxes that face each other across the body at "
+                        "least as far apart as the nonlocal collar is deep (" +
+                          to_string(interaction_range) +
+                          " on the coarsest level), or touching; here " +
+                          to_string(gap) + " along " + "xyz"[d]);
+          }
 
     // Meshes of size h must resolve every interface of the layout.
     const auto check_multiple = [&](const double       length,
@@ -290,10 +432,13 @@ namespace ltn
     for (unsigned int d = 0; d < dim; ++d)
       {
         check_multiple(body.upper[d] - body.lower[d], "the body's extent");
-        check_multiple(nonlocal_region.lower[d] - body.lower[d],
-                       "the offset of the nonlocal region in the body");
-        check_multiple(nonlocal_region.upper[d] - body.lower[d],
-                       "the offset of the nonlocal region in the body");
+        for (const auto &box : boxes)
+          {
+            check_multiple(box.lower[d] - body.lower[d],
+                           "the offset of the nonlocal region in the body");
+            check_multiple(box.upper[d] - body.lower[d],
+                           "the offset of the nonlocal region in the body");
+          }
       }
     check_multiple(overlap_width, "the overlap width");
   }
@@ -304,29 +449,7 @@ namespace ltn
   bool
   Geometry<dim>::nonlocal_face_on_body_boundary(const unsigned int face) const
   {
-    const unsigned int d = face / 2;
-    return (face % 2 == 0) ?
-             std::abs(nonlocal_region.lower[d] - body.lower[d]) <= tolerance() :
-             std::abs(nonlocal_region.upper[d] - body.upper[d]) <= tolerance();
-  }
-
-
-
-  template <int dim>
-  Box<dim>
-  Geometry<dim>::shrunk_nonlocal_region() const
-  {
-    Box<dim> shrunk = nonlocal_region;
-    for (unsigned int f = 0; f < 2 * dim; ++f)
-      if (!nonlocal_face_on_body_boundary(f))
-        {
-          const unsigned int d = f / 2;
-          if (f % 2 == 0)
-            shrunk.lower[d] += overlap_width;
-          else
-            shrunk.upper[d] -= overlap_width;
-        }
-    return shrunk;
+    return region.touches_body_face(face);
   }
 
 
@@ -335,23 +458,10 @@ namespace ltn
   bool
   Geometry<dim>::in_local_region(const Point<dim> &p) const
   {
-    // The removed part is the shrunk Omega_n, open on its interior faces and
-    // extended beyond the body on faces that lie on the body's boundary (so
-    // that a point of such a face is not a degenerate piece of Omega_l).
-    const double diameter = body.lower.distance(body.upper);
-    Box<dim>     removed  = shrunk_nonlocal_region();
-    for (unsigned int f = 0; f < 2 * dim; ++f)
-      if (nonlocal_face_on_body_boundary(f))
-        {
-          if (f % 2 == 0)
-            removed.lower[f / 2] -= diameter;
-          else
-            removed.upper[f / 2] += diameter;
-        }
     const double tol = tolerance();
     if (models != Models::coupled)
       return models == Models::local_only && body.contains(p, tol);
-    return body.contains(p, tol) && !removed.contains_strictly(p, tol);
+    return body.contains(p, tol) && region.in_local_part(p);
   }
 
 
@@ -360,8 +470,7 @@ namespace ltn
   bool
   Geometry<dim>::in_overlap(const Point<dim> &p, const double range) const
   {
-    return in_local_region(p) &&
-           nonlocal_region.distance(p) <= range + tolerance();
+    return in_local_region(p) && region.distance(p) <= range + tolerance();
   }
 
 
@@ -374,16 +483,16 @@ namespace ltn
     // Collar tags first: they show the nonlocal model's own roles (volume
     // constraint, control); inside Omega_n the overlap band is marked.
     const double tol = tolerance();
-    if (nonlocal_region.contains_strictly(p, tol))
+    if (region.contains_strictly(p, tol))
       return in_overlap(p, range) ? Region::overlap : Region::nonlocal;
-    // A collar point is physical when it lies beyond a face of Omega_n that
-    // sits on the body's boundary.
+    // A collar point is physical when it lies on or beyond a face of the
+    // body that Omega_n touches.
     for (unsigned int f = 0; f < 2 * dim; ++f)
-      if (nonlocal_face_on_body_boundary(f))
+      if (region.touches_body_face(f))
         {
           const unsigned int d = f / 2;
-          if ((f % 2 == 0 && p[d] <= nonlocal_region.lower[d] + tol) ||
-              (f % 2 == 1 && p[d] >= nonlocal_region.upper[d] - tol))
+          if ((f % 2 == 0 && p[d] <= body.lower[d] + tol) ||
+              (f % 2 == 1 && p[d] >= body.upper[d] - tol))
             return Region::physical_collar;
         }
     return Region::control_collar;
@@ -443,9 +552,6 @@ namespace ltn
     throw InputError(parameter, name, allowed);
   }
 
-  template struct Box<1>;
-  template struct Box<2>;
-  template struct Box<3>;
   template class Geometry<1>;
   template class Geometry<2>;
   template class Geometry<3>;

@@ -114,16 +114,25 @@ namespace ltn
                       "which a `nonlocal only` scene does not have");
           // The local mesh has a hole where only the nonlocal model lives:
           // a plane through it would miss part of the force.
-          const Box<dim> hole = geometry.shrunk_nonlocal_region();
-          check_input(!geometry.has_nonlocal_model() ||
-                        c <= hole.lower[d] + geometry.tolerance() ||
-                        c >= hole.upper[d] - geometry.tolerance(),
-                      parameter,
-                      item,
-                      "planes that the local mesh covers whole: outside " +
-                        to_string(hole.lower[d]) + " < " + "xyz"[d] + " < " +
-                        to_string(hole.upper[d]) +
-                        ", where only the nonlocal model lives");
+          if (geometry.has_nonlocal_model())
+            {
+              std::string holes;
+              bool        through_hole = false;
+              for (const auto &[lower, upper] :
+                   geometry.nonlocal_region().shrunk_extent(d))
+                {
+                  through_hole =
+                    through_hole || (c > lower + geometry.tolerance() &&
+                                     c < upper - geometry.tolerance());
+                  holes += (holes.empty() ? "" : " and ") + to_string(lower) +
+                           " < " + "xyz"[d] + " < " + to_string(upper);
+                }
+              check_input(!through_hole,
+                          parameter,
+                          item,
+                          "planes that the local mesh covers whole: outside " +
+                            holes + ", where only the nonlocal model lives");
+            }
           planes.emplace_back(d, c);
         }
       return planes;

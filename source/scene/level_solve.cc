@@ -92,7 +92,7 @@ namespace ltn
                 const DoFHandler<dim>               *local_dofs,
                 const TrilinosWrappers::MPI::Vector &local_field,
                 const Function<dim>                 &exact,
-                const Box<dim>                      &nonlocal_region,
+                const NonlocalRegion<dim>           &nonlocal_region,
                 const double                         tolerance,
                 LevelRecord                         &record)
   {
@@ -148,7 +148,7 @@ namespace ltn
                               const DoFHandler<dim> *,               \
                               const TrilinosWrappers::MPI::Vector &, \
                               const Function<dim> &,                 \
-                              const Box<dim> &,                      \
+                              const NonlocalRegion<dim> &,           \
                               double,                                \
                               LevelRecord &);
   LTN_INSTANTIATE(1)

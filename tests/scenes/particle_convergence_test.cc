@@ -17,6 +17,18 @@ TEST_CASE("2D second order at fixed horizon against the nonlocal solution",
 
 
 
+TEST_CASE("2D second order on a nonlocal region made of boxes",
+          "[particles][convergence]")
+{
+  // An L-shape: its concave corner and the face where its boxes touch.
+  const SceneRun run =
+    run_scene("diffusion_2d_convergence",
+              {"Geometry/Nonlocal regions=0,0,0.5,1; 0.5,0,1,0.5"});
+  check_coupled_rates(run.summary, 1.9, 1.9);
+}
+
+
+
 TEST_CASE("2D asymptotic compatibility with eps = m h",
           "[particles][convergence]")
 {

@@ -26,14 +26,19 @@ namespace
     "Problem data/Nonlocal right-hand side=0",
     "Problem data/Local right-hand side=0"};
 
-  /** Patch test with both methods; @p max_u normalizes the max error. */
+  /**
+   * Patch test with both methods (or @p methods); @p max_u normalizes the
+   * max error.
+   */
   void
   check_patch(const std::string              &scene,
               const std::vector<std::string> &sets,
-              const double                    max_u)
+              const double                    max_u,
+              const std::vector<std::string> &methods = {"full space direct",
+                                                         "reduced space cg"})
   {
     std::vector<ltn::CouplingSolution> solutions;
-    for (const std::string method : {"full space direct", "reduced space cg"})
+    for (const std::string &method : methods)
       {
         auto with_method = sets;
         with_method.push_back("Coupling/Method=" + std::string(method));
@@ -55,7 +60,8 @@ namespace
           }
         solutions.push_back(run.solutions.back());
       }
-    CHECK(relative_difference(solutions[0], solutions[1]) <= 1e-8);
+    if (solutions.size() == 2)
+      CHECK(relative_difference(solutions[0], solutions[1]) <= 1e-8);
   }
 } // namespace
 
@@ -139,4 +145,84 @@ TEST_CASE("2D patch test with a lattice that does not line up with the mesh",
   auto sets = quadratic_2d;
   sets.push_back("Nonlocal model/Particle spacing to mesh size ratio=0.4");
   check_patch("diffusion_2d_patch", sets, 7.5);
+}
+
+
+
+// Nonlocal regions made of boxes (doc/model_adaptivity.md): an L-shape
+// (a concave corner, boxes touching along a face) and a box apart from it,
+// a T-shape, in 2D and 3D, diffusion and LPS.
+namespace
+{
+  /** In diffusion_2d_patch (h = 1/16, eps = 3h): an L and a box apart. */
+  const std::vector<std::string> diffusion_2d_union = {
+    "Geometry/Nonlocal regions=0,0,0.5,1; 0.5,0,1,0.5; 1.375,0.25,1.75,0.75",
+    "Geometry/Overlap width=0.125"};
+
+  /** In lps_plate_2d_quadratic_patch (h = 1/16, eps = h): a T and a box. */
+  const std::string lps_2d_union =
+    "Geometry/Nonlocal regions=0.5,0.5,1.5,0.875; 0.75,0.25,1.25,0.5; "
+    "1.75,0.25,2,0.75";
+
+  std::vector<std::string>
+  with(std::vector<std::string> sets, const std::vector<std::string> &more)
+  {
+    sets.insert(sets.end(), more.begin(), more.end());
+    return sets;
+  }
+} // namespace
+
+
+
+TEST_CASE("patch tests on nonlocal regions made of boxes, 2D diffusion",
+          "[particles][patch]")
+{
+  check_patch("diffusion_2d_patch", diffusion_2d_union, 4);
+  check_patch("diffusion_2d_patch",
+              with(quadratic_2d, diffusion_2d_union),
+              7.5);
+}
+
+
+
+TEST_CASE("patch tests on nonlocal regions made of boxes, 3D diffusion",
+          "[particles][patch]")
+{
+  // An L touching five faces of the body, around the edge x = 0.5, y = 0.5.
+  const std::vector<std::string> l_shape = {
+    "Geometry/Nonlocal regions=0,0,0,0.5,1,1; 0.5,0,0,1,0.5,1"};
+  check_patch("diffusion_3d_patch", l_shape, 2);
+  check_patch("diffusion_3d_patch", with(quadratic_3d, l_shape), 6);
+}
+
+
+
+TEST_CASE("patch tests on nonlocal regions made of boxes, LPS",
+          "[particles][patch][elasticity]")
+{
+  // max |u| = 1e-5 x^2 at x = 2 and x = 3.
+  check_patch("lps_plate_2d_quadratic_patch", {lps_2d_union}, 4e-5);
+  check_patch("lps_plate_2d_linear_patch", {lps_2d_union}, 2e-3);
+  // An L in the x-y plane and a box apart; the full-space factorization of
+  // 3D LPS takes minutes: the reduced space only.
+  check_patch("lps_bar_3d_quadratic_patch",
+              {"Geometry/Nonlocal regions=1,0.25,0.25,1.5,0.75,0.75; "
+               "1.5,0.25,0.25,1.875,0.5,0.75; 2.25,0.25,0.25,2.75,0.75,0.75"},
+              9e-5,
+              {"reduced space cg"});
+}
+
+
+
+TEST_CASE("a crack in one arm of a T: rigid motions to round-off",
+          "[particles][patch][elasticity]")
+{
+  // Across cut bonds only rigid motions are exact (a strain is not: the
+  // surface effect of LPS at crack faces).
+  check_patch("lps_plate_2d_quadratic_patch",
+              {lps_2d_union,
+               "Cracks/Corners=1, 0.4, 1, 0.7",
+               "Problem data/Exact solution=1e-5*(1 - y); 1e-5*(2 + x)",
+               "Problem data/Body force=0; 0"},
+              4e-5);
 }

@@ -20,13 +20,65 @@ ltn::Geometry<dim>
 particle_layout()
 {
   ltn::Geometry<dim> geometry;
+  ltn::Box<dim>      region;
   for (unsigned int d = 0; d < dim; ++d)
     {
-      geometry.body.upper[d]            = (d == 0) ? 2 : 1;
-      geometry.nonlocal_region.lower[d] = (d == 0) ? 0 : 0.25;
-      geometry.nonlocal_region.upper[d] = (d == 0) ? 1.25 : 0.75;
+      geometry.body.upper[d] = (d == 0) ? 2 : 1;
+      region.lower[d]        = (d == 0) ? 0 : 0.25;
+      region.upper[d]        = (d == 0) ? 1.25 : 0.75;
     }
   geometry.overlap_width = 0.125;
+  geometry.set_nonlocal_boxes({region});
+  return geometry;
+}
+
+/**
+ * The body of particle_layout() with Omega_n made of four boxes, in the
+ * (x, y) plane (z, in 3D, from 0.25 to 0.75 for all): a U of a bar
+ * (0,1.125)x(0.25,0.5) with two arms (0,0.25)x(0.5,0.75) and
+ * (0.875,1.125)x(0.5,0.75), and apart from it (1.625,1.875)x(0.25,0.75).
+ * Lattice lines through both arms have two runs, and the bar's lines pass
+ * under the gap: a segment of the products ends where its neighbours' line
+ * enters its next run.
+ */
+template <int dim>
+ltn::Geometry<dim>
+union_layout()
+{
+  ltn::Geometry<dim>                         geometry = particle_layout<dim>();
+  const std::array<std::array<double, 4>, 4> xy       = {
+    {{{0, 0.25, 1.125, 0.5}},
+           {{0, 0.5, 0.25, 0.75}},
+           {{0.875, 0.5, 1.125, 0.75}},
+           {{1.625, 0.25, 1.875, 0.75}}}};
+  std::vector<ltn::Box<dim>> boxes(xy.size());
+  for (unsigned int b = 0; b < xy.size(); ++b)
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        boxes[b].lower[d] = d < 2 ? xy[b][d] : 0.25;
+        boxes[b].upper[d] = d < 2 ? xy[b][2 + d] : 0.75;
+      }
+  geometry.set_nonlocal_boxes(boxes);
+  return geometry;
+}
+
+/**
+ * particle_layout() and union_layout() for the lifetime of the tests: a
+ * particle model keeps a reference to its geometry.
+ */
+template <int dim>
+const ltn::Geometry<dim> &
+lasting_particle_layout()
+{
+  static const ltn::Geometry<dim> geometry = particle_layout<dim>();
+  return geometry;
+}
+
+template <int dim>
+const ltn::Geometry<dim> &
+lasting_union_layout()
+{
+  static const ltn::Geometry<dim> geometry = union_layout<dim>();
   return geometry;
 }
 
@@ -52,12 +104,15 @@ crack_at(const double x, const double half_width)
  */
 template <int dim>
 std::unique_ptr<ltn::ParticleElasticity<dim>>
-cracked_lps(const double h, const double m, const bool matrix_free)
+cracked_lps(const double              h,
+            const double              m,
+            const bool                matrix_free,
+            const ltn::Geometry<dim> &geometry = lasting_particle_layout<dim>())
 {
   const std::vector<ltn::Crack<dim>> cracks = {crack_at<dim>(0.5 + h / 2, 0.1),
                                                crack_at<dim>(1 - h / 2, 10)};
   auto particles = std::make_unique<ltn::ParticleElasticity<dim>>(
-    particle_layout<dim>(),
+    geometry,
     ltn::Kernel(ltn::KernelKind::constant, 0.5, dim, m * h),
     h,
     1.3,
@@ -75,10 +130,14 @@ cracked_lps(const double h, const double m, const bool matrix_free)
  */
 template <int dim>
 std::unique_ptr<ltn::ParticleDiffusion<dim>>
-layout_diffusion(const double h, const double m, const bool matrix_free)
+layout_diffusion(
+  const double              h,
+  const double              m,
+  const bool                matrix_free,
+  const ltn::Geometry<dim> &geometry = lasting_particle_layout<dim>())
 {
   auto particles = std::make_unique<ltn::ParticleDiffusion<dim>>(
-    particle_layout<dim>(),
+    geometry,
     ltn::Kernel(ltn::KernelKind::constant, 0.5, dim, m * h),
     h,
     MPI_COMM_WORLD);

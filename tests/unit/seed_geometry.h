@@ -9,10 +9,9 @@ inline ltn::Geometry<1>
 seed_geometry()
 {
   ltn::Geometry<1> geometry;
-  geometry.body.lower[0]            = 0;
-  geometry.body.upper[0]            = 1.75;
-  geometry.nonlocal_region.lower[0] = 0;
-  geometry.nonlocal_region.upper[0] = 1;
-  geometry.overlap_width            = 0.25;
+  geometry.body.lower[0] = 0;
+  geometry.body.upper[0] = 1.75;
+  geometry.overlap_width = 0.25;
+  geometry.set_nonlocal_boxes({{ltn::Point<1>(0), ltn::Point<1>(1)}});
   return geometry;
 }

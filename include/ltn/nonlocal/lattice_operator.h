@@ -174,9 +174,10 @@ namespace ltn
     static constexpr unsigned int lanes = 4;
 
     /**
-     * For the particles from @p p to the end of its lattice line (or of
-     * this rank's range, the number returned), where the bond along `o_k`
-     * of particle `i` reaches: number `origin[k] + i`, present if in
+     * For the particles from @p p to the end of a segment (the number
+     * returned: the end of its run of a lattice line, of this rank's range,
+     * or where some neighbour line's next run begins), where the bond along
+     * `o_k` of particle `i` reaches: number `origin[k] + i`, present if in
      * `[lo[k], hi[k])`.
      */
     types::global_dof_index

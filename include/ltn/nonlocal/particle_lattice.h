@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace ltn
@@ -17,16 +18,17 @@ namespace ltn
 
   /**
    * The particles of a nonlocal region as an implicit lattice: the centres of
-   * the cells of spacing `h` that fill the box `Omega_n`
-   * (`0 <= i_d < n_d`), plus the collar cells some cell of `Omega_n`
-   * reaches, i.e. whose offset from the nearest cell of `Omega_n` is one of
-   * the stencil's offsets.
+   * the cells of spacing `h` that fill the boxes of `Omega_n`, on the grid
+   * anchored at the lower corner of their bounding box (`0 <= i_d < n_d`),
+   * plus the collar cells some cell of `Omega_n` reaches, i.e. whose offset
+   * from the nearest cell of some box is one of the stencil's offsets.
    *
    * Particles are numbered lexicographically, `i_0` fastest. Along each line
-   * of fixed `(i_1, ..., i_{dim-1})` the particles present are contiguous
-   * (the stencil is convex along the axes), so a table of one entry per line
-   * maps lattice indices to numbers and back: memory proportional to the
-   * number of lines, not of particles, on every rank.
+   * of fixed `(i_1, ..., i_{dim-1})` the particles present form runs of
+   * consecutive `i_0` (one per line for a single box: the stencil is convex
+   * along the axes; a line may pass several boxes, with gaps between them).
+   * A table of runs maps lattice indices to numbers and back: memory
+   * proportional to the number of lines, not of particles, on every rank.
    */
   template <int dim>
   class ParticleLattice
@@ -37,7 +39,7 @@ namespace ltn
     static constexpr types::global_dof_index invalid =
       numbers::invalid_dof_index;
 
-    ParticleLattice(const Box<dim>                  &region,
+    ParticleLattice(const NonlocalRegion<dim>       &region,
                     const double                     spacing,
                     const std::vector<LatticeIndex> &reach);
 
@@ -49,18 +51,23 @@ namespace ltn
     number(const LatticeIndex &index) const;
 
     /**
-     * A line of the lattice: its particles (fixed `i_1, ..., i_{dim-1}`)
+     * A run of a lattice line: its particles (fixed `i_1, ..., i_{dim-1}`)
      * have the consecutive numbers `[begin, end)`, and the one at `i_0` the
-     * number `origin + i_0`.
+     * number `origin + i_0`. The line's next run starts at `i_0 =
+     * next_first` (the largest int if none).
      */
     struct Line
     {
-      std::int64_t            origin = 0;
-      types::global_dof_index begin  = 0;
-      types::global_dof_index end    = 0;
+      std::int64_t            origin     = 0;
+      types::global_dof_index begin      = 0;
+      types::global_dof_index end        = 0;
+      int                     next_first = std::numeric_limits<int>::max();
     };
 
-    /** The line through @p index (its `i_0` ignored); empty if absent. */
+    /**
+     * The run of the line through @p index that holds its `i_0`, or else the
+     * line's first run beyond it; empty if there is none.
+     */
     Line
     line(const LatticeIndex &index) const;
 
@@ -81,9 +88,9 @@ namespace ltn
 
     /**
      * The number of the particle at @p index among those of `Omega_n`,
-     * lexicographic in its box (`i_0` fastest), as `number` is among all:
-     * both orders agree, so the particles of `Omega_n` in a contiguous
-     * range of numbers have contiguous numbers here.
+     * lexicographic (`i_0` fastest), as `number` is among all: both orders
+     * agree, so the particles of `Omega_n` in a contiguous range of numbers
+     * have contiguous numbers here.
      */
     types::global_dof_index
     inside_number(const LatticeIndex &index) const;
@@ -112,14 +119,33 @@ namespace ltn
     std::size_t
     line_of(const LatticeIndex &index) const;
 
+    /**
+     * Intervals `[first, end)` of `i_0` per line, in increasing order, with
+     * the count of the intervals' points before each: the particles present
+     * (runs), or those of `Omega_n`.
+     */
+    struct Intervals
+    {
+      /** Per line, its intervals are `[line_begin[l], line_begin[l + 1])`. */
+      std::vector<std::size_t>             line_begin;
+      std::vector<int>                     first, end;
+      std::vector<types::global_dof_index> start;
+      /** The line of each interval. */
+      std::vector<std::size_t> line;
+
+      /** The interval of line @p l holding @p x, or the next; may be past. */
+      std::size_t
+      find(const std::size_t l, const int x) const;
+      types::global_dof_index
+      total() const;
+    };
+
     Point<dim>   origin;
     double       spacing;
     LatticeIndex n;
     int          radius;
-    /** Per line: the present `i_0` in `[first_x, end_x)`. */
-    std::vector<int> first_x, end_x;
-    /** Per line: the number of its first particle; one more at the end. */
-    std::vector<types::global_dof_index> line_start;
+    Intervals    runs;
+    Intervals    inside_runs;
   };
 
 
@@ -150,13 +176,16 @@ namespace ltn
     while (true)
       {
         const std::size_t line = line_of(index);
-        for (int x = std::max(lo[0], first_x[line]);
-             x <= std::min(hi[0], end_x[line] - 1);
-             ++x)
-          {
-            index[0] = x;
-            f(index, line_start[line] + (x - first_x[line]));
-          }
+        for (std::size_t r = runs.line_begin[line];
+             r < runs.line_begin[line + 1];
+             ++r)
+          for (int x = std::max(lo[0], runs.first[r]);
+               x <= std::min(hi[0], runs.end[r] - 1);
+               ++x)
+            {
+              index[0] = x;
+              f(index, runs.start[r] + (x - runs.first[r]));
+            }
         // Next line: increment (i_1, ..., i_{dim-1}) within the box.
         unsigned int d = 1;
         for (; d < dim; ++d)

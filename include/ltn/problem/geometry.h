@@ -3,32 +3,15 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <ltn/problem/box.h>
+#include <ltn/problem/nonlocal_region.h>
+
 #include <string>
 #include <vector>
 
 namespace ltn
 {
   using namespace dealii;
-
-  /** An axis-aligned box `[lower, upper]`. */
-  template <int dim>
-  struct Box
-  {
-    Point<dim> lower;
-    Point<dim> upper;
-
-    /** Is @p p in the closed box, up to a tolerance? */
-    bool
-    contains(const Point<dim> &p, const double tolerance = 0) const;
-
-    /** Is @p p in the open box, at least @p tolerance from its faces? */
-    bool
-    contains_strictly(const Point<dim> &p, const double tolerance = 0) const;
-
-    /** Euclidean distance from @p p to the box (zero inside). */
-    double
-    distance(const Point<dim> &p) const;
-  };
 
   /**
    * The tag of a point in a scene, written into the output so that ParaView
@@ -48,13 +31,15 @@ namespace ltn
 
   /**
    * The layout of a scene (section 3 of the design): the body `D`, the
-   * nonlocal region `Omega_n` (a box inside `D`), and the overlap width. The
-   * rest is derived: the local region `Omega_l` is `D` minus the interior of
-   * `Omega_n` shrunk by the overlap width on every face of `Omega_n` that lies
-   * inside `D`; the collar of `Omega_n` (points within the interaction range)
-   * is physical outside `D` and a control collar inside; `Omega_b` is
-   * `Omega_l` intersected with `Omega_n` and its control collar; `Gamma_c` is
-   * the part of the boundary of `Omega_l` inside `Omega_n`.
+   * nonlocal region `Omega_n` (a union of boxes inside `D`, see
+   * NonlocalRegion), and the overlap width. The rest is derived: the local
+   * region `Omega_l` is `D` minus the interior of `Omega_n` shrunk by the
+   * overlap width against the part of `D` outside it (faces on the body's
+   * boundary and faces where boxes touch are not shrunk); the collar of
+   * `Omega_n` (points within the interaction range) is physical outside `D`
+   * and a control collar inside; `Omega_b` is `Omega_l` intersected with
+   * `Omega_n` and its control collar; `Gamma_c` is the part of the boundary
+   * of `Omega_l` inside `Omega_n`.
    *
    * Faces of a box are numbered as in deal.II's colorized meshes: `2 d` is the
    * lower face in direction `d`, `2 d + 1` the upper one; users name them
@@ -93,13 +78,21 @@ namespace ltn
              const double interaction_range,
              const double horizon) const;
 
-    /** Does face @p face of `Omega_n` lie on the boundary of the body? */
+    /** Does `Omega_n` touch face @p face of the body (with some area)? */
     bool
     nonlocal_face_on_body_boundary(const unsigned int face) const;
 
-    /** `Omega_n` shrunk by the overlap width on its faces inside the body. */
-    Box<dim>
-    shrunk_nonlocal_region() const;
+    /**
+     * Make `Omega_n` the union of @p boxes, in the current `body` with the
+     * current `overlap_width` (set those first).
+     */
+    void
+    set_nonlocal_boxes(const std::vector<Box<dim>> &boxes);
+
+    /** `Omega_n` and the sets derived from it; the body itself in a
+     * `nonlocal only` scene. */
+    const NonlocalRegion<dim> &
+    nonlocal_region() const;
 
     /** Is @p p in the (closed) local region `Omega_l`? */
     bool
@@ -145,8 +138,14 @@ namespace ltn
 
     Models   models = Models::coupled;
     Box<dim> body;
-    /** `Omega_n`; the body itself in a `nonlocal only` scene. */
-    Box<dim> nonlocal_region;
     double   overlap_width = 0;
+
+  private:
+    /**
+     * Was `Omega_n` given as a list (`Nonlocal regions`) rather than by the
+     * two corners? Input errors name the parameter the user wrote.
+     */
+    bool                given_as_list = false;
+    NonlocalRegion<dim> region;
   };
 } // namespace ltn

@@ -51,7 +51,7 @@ namespace ltn
                 const DoFHandler<dim>               *local_dofs,
                 const TrilinosWrappers::MPI::Vector &local_field,
                 const Function<dim>                 &exact,
-                const Box<dim>                      &nonlocal_region,
+                const NonlocalRegion<dim>           &nonlocal_region,
                 const double                         tolerance,
                 LevelRecord                         &record);
 

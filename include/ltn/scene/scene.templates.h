@@ -178,7 +178,7 @@ namespace ltn
                                local ? &local->get_dof_handler() : nullptr,
                                local_field,
                                *exact,
-                               geometry.nonlocal_region,
+                               geometry.nonlocal_region(),
                                geometry.tolerance(),
                                record);
           }

@@ -47,8 +47,9 @@ namespace ltn
                                const DoFHandler<1> &nonlocal_dofs,
                                const DoFHandler<1> &local_dofs)
   {
-    std::vector<double> breaks = {geometry.nonlocal_region.lower[0] - horizon,
-                                  geometry.nonlocal_region.upper[0] + horizon};
+    const Box<1>        region = geometry.nonlocal_region().bounding_box();
+    std::vector<double> breaks = {region.lower[0] - horizon,
+                                  region.upper[0] + horizon};
     for (const auto *dofs : {&nonlocal_dofs, &local_dofs})
       for (const auto &cell : dofs->active_cell_iterators())
         for (const auto v : cell->vertex_indices())

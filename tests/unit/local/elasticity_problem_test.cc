@@ -44,7 +44,7 @@ namespace
     geometry.models = Geometry<dim>::Models::local_only;
     for (unsigned int d = 0; d < dim; ++d)
       geometry.body.upper[d] = (d == 0) ? 2 : 1;
-    geometry.nonlocal_region = geometry.body;
+    geometry.set_nonlocal_boxes({geometry.body});
     return geometry;
   }
 
@@ -373,9 +373,11 @@ namespace
   {
     Geometry<dim> geometry = box_geometry<dim>();
     geometry.models        = Geometry<dim>::Models::coupled;
+    Box<dim> region;
     for (unsigned int d = 0; d < dim; ++d)
-      geometry.nonlocal_region.upper[d] = 1;
+      region.upper[d] = 1;
     geometry.overlap_width = 0.25;
+    geometry.set_nonlocal_boxes({region});
     // y- a roller: the traction acts on its other components.
     const LocalParameters<dim> parameters = parse_local_parameters<dim>(
       dim == 2 ? "x+, y-, y+" : "x+, y-, y+, z-, z+", "y-: y");

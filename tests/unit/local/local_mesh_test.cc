@@ -25,13 +25,15 @@ namespace
   plate_geometry()
   {
     Geometry<dim> geometry;
+    Box<dim>      region;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        geometry.body.upper[d]            = 2;
-        geometry.nonlocal_region.lower[d] = (d == 0) ? 0.5 : 0.75;
-        geometry.nonlocal_region.upper[d] = (d == 0) ? 1.5 : 1.25;
+        geometry.body.upper[d] = 2;
+        region.lower[d]        = (d == 0) ? 0.5 : 0.75;
+        region.upper[d]        = (d == 0) ? 1.5 : 1.25;
       }
     geometry.overlap_width = (dim == 2) ? 0.1 : 0.125;
+    geometry.set_nonlocal_boxes({region});
     return geometry;
   }
 
@@ -70,7 +72,9 @@ namespace
         {
           const double size = cell->extent_in_direction(0);
           const double distance =
-            cell_distance(cell->center(), size, geometry.nonlocal_region);
+            cell_distance(cell->center(),
+                          size,
+                          geometry.nonlocal_region().boxes().front());
           INFO("cell at " << cell->center() << " of size " << size);
           // Cells of size h within `layers` h of Omega_n (all of the
           // overlap among them); coarser ones farther out.

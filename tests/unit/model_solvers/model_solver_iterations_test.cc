@@ -28,11 +28,9 @@ namespace
   {
     Geometry<dim> geometry;
     for (unsigned int d = 0; d < dim; ++d)
-      {
-        geometry.body.upper[d]            = 1;
-        geometry.nonlocal_region.upper[d] = 1;
-      }
+      geometry.body.upper[d] = 1;
     geometry.overlap_width = 0;
+    geometry.set_nonlocal_boxes({geometry.body});
     return geometry;
   }
 
@@ -127,10 +125,9 @@ namespace
   cracked_inner_region(const double h, const double modulus)
   {
     Geometry<2> geometry;
-    geometry.body.upper            = Point<2>(2, 1);
-    geometry.nonlocal_region.lower = Point<2>(0.25, 0.25);
-    geometry.nonlocal_region.upper = Point<2>(1.25, 0.75);
-    geometry.overlap_width         = 0.125;
+    geometry.body.upper    = Point<2>(2, 1);
+    geometry.overlap_width = 0.125;
+    geometry.set_nonlocal_boxes({{Point<2>(0.25, 0.25), Point<2>(1.25, 0.75)}});
     Crack<2> crack;
     crack.corners[0] = Point<2>(0.75 + h / 2, 0.375);
     crack.corners[1] = Point<2>(0.75 + h / 2, 0.625);

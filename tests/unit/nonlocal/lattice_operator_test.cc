@@ -150,10 +150,13 @@ namespace
 
   template <int dim>
   void
-  check_elasticity(const double h, const double m)
+  check_elasticity(
+    const double         h,
+    const double         m,
+    const Geometry<dim> &geometry = lasting_particle_layout<dim>())
   {
-    const auto   assembled   = cracked_lps<dim>(h, m, false);
-    const auto   matrix_free = cracked_lps<dim>(h, m, true);
+    const auto   assembled   = cracked_lps<dim>(h, m, false, geometry);
+    const auto   matrix_free = cracked_lps<dim>(h, m, true, geometry);
     const double difference =
       product_difference(assembled->get_model(), matrix_free->get_model());
     const auto &op = dynamic_cast<const LatticeOperator<dim> &>(
@@ -183,10 +186,13 @@ namespace
 
   template <int dim>
   void
-  check_diffusion(const double h, const double m)
+  check_diffusion(
+    const double         h,
+    const double         m,
+    const Geometry<dim> &geometry = lasting_particle_layout<dim>())
   {
-    const auto   assembled   = layout_diffusion<dim>(h, m, false);
-    const auto   matrix_free = layout_diffusion<dim>(h, m, true);
+    const auto   assembled   = layout_diffusion<dim>(h, m, false, geometry);
+    const auto   matrix_free = layout_diffusion<dim>(h, m, true, geometry);
     const double difference =
       product_difference(assembled->get_model(), matrix_free->get_model());
     INFO(dim << "D diffusion, m = " << m << ": difference " << difference);
@@ -205,4 +211,18 @@ TEST_CASE("matrix-free particle operators equal the assembled ones",
   check_elasticity<2>(1. / 32, 2);
   check_elasticity<2>(1. / 32, 3.5);
   check_elasticity<3>(1. / 16, 2);
+}
+
+
+
+// Lines through boxes apart have runs with gaps: a segment of the products
+// ends where a neighbour's line enters its next run (without that end, the
+// 2D diffusion products differ by 12 %).
+TEST_CASE("matrix-free particle operators on a region of four boxes",
+          "[matrix-free][unit]")
+{
+  check_diffusion<2>(1. / 32, 3, lasting_union_layout<2>());
+  check_diffusion<3>(1. / 16, 2, lasting_union_layout<3>());
+  check_elasticity<2>(1. / 32, 2, lasting_union_layout<2>());
+  check_elasticity<3>(1. / 16, 2, lasting_union_layout<3>());
 }

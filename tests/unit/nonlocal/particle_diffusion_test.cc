@@ -21,12 +21,14 @@ namespace
   {
     // Omega_n = (0,1)^dim touching the body on its lower faces.
     Geometry<dim> geometry;
+    Box<dim>      region;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        geometry.body.upper[d]            = (d == 0) ? 2 : 1;
-        geometry.nonlocal_region.upper[d] = 1;
+        geometry.body.upper[d] = (d == 0) ? 2 : 1;
+        region.upper[d]        = 1;
       }
     geometry.overlap_width = 0.25;
+    geometry.set_nonlocal_boxes({region});
     return geometry;
   }
 

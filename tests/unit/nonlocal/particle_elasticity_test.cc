@@ -24,13 +24,15 @@ namespace
   bar_layout()
   {
     Geometry<dim> geometry;
+    Box<dim>      region;
     for (unsigned int d = 0; d < dim; ++d)
       {
-        geometry.body.upper[d]            = (d == 0) ? 2 : 1;
-        geometry.nonlocal_region.lower[d] = 0.25;
-        geometry.nonlocal_region.upper[d] = (d == 0) ? 1.25 : 0.75;
+        geometry.body.upper[d] = (d == 0) ? 2 : 1;
+        region.lower[d]        = 0.25;
+        region.upper[d]        = (d == 0) ? 1.25 : 0.75;
       }
     geometry.overlap_width = 0.125;
+    geometry.set_nonlocal_boxes({region});
     return geometry;
   }
 

@@ -15,7 +15,9 @@ TEST_CASE("regions of the seed's 1D layout", "[geometry]")
 
   CHECK(g.nonlocal_face_on_body_boundary(0));
   CHECK_FALSE(g.nonlocal_face_on_body_boundary(1));
-  CHECK(g.shrunk_nonlocal_region().upper[0] == Approx(0.75));
+  const auto shrunk = g.nonlocal_region().shrunk_extent(0);
+  REQUIRE(shrunk.size() == 1);
+  CHECK(shrunk[0].second == Approx(0.75));
 
   const auto region = [&](const double x) {
     return g.nonlocal_region_of(Point<1>(x), eps);
@@ -40,13 +42,16 @@ TEST_CASE("regions of the seed's 1D layout", "[geometry]")
 TEST_CASE("2D layout: overlap band on the interior face only", "[geometry]")
 {
   Geometry<2> g;
-  g.body.upper            = Point<2>(2, 1);
-  g.nonlocal_region.upper = Point<2>(1, 1);
-  g.overlap_width         = 0.25;
-  const Box<2> shrunk     = g.shrunk_nonlocal_region();
-  CHECK(shrunk.lower[0] == Approx(0));
-  CHECK(shrunk.upper[0] == Approx(0.75));
-  CHECK(shrunk.upper[1] == Approx(1));
+  g.body.upper    = Point<2>(2, 1);
+  g.overlap_width = 0.25;
+  g.set_nonlocal_boxes({{Point<2>(0, 0), Point<2>(1, 1)}});
+  const auto x = g.nonlocal_region().shrunk_extent(0);
+  const auto y = g.nonlocal_region().shrunk_extent(1);
+  REQUIRE(x.size() == 1);
+  REQUIRE(y.size() == 1);
+  CHECK(x[0].first == Approx(0));
+  CHECK(x[0].second == Approx(0.75));
+  CHECK(y[0].second == Approx(1));
   CHECK(g.in_local_region(Point<2>(0.8, 0.5)));
   CHECK_FALSE(g.in_local_region(Point<2>(0.5, 0.5)));
   // The control collar has rounded corners: Euclidean distance to Omega_n.
