@@ -11,10 +11,10 @@ namespace ltn
   std::size_t
   ParticleLattice<dim>::Intervals::find(const std::size_t l, const int x) const
   {
-    std::size_t r = line_begin[l];
-    while (r < line_begin[l + 1] && end[r] <= x)
-      ++r;
-    return r;
+    return std::upper_bound(end.begin() + line_begin[l],
+                            end.begin() + line_begin[l + 1],
+                            x) -
+           end.begin();
   }
 
 

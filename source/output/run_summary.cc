@@ -122,6 +122,27 @@ namespace ltn
       j["errors"]     = errors_to_json(level);
       if (!level.extras.is_null())
         j["mechanics"] = level.extras;
+      if (const ModelErrorRecord &e = level.model_error; e.computed)
+        {
+          JsonValue &m        = j["model_error"];
+          m["estimate_short"] = e.estimate;
+          m["relative"]       = e.relative;
+          m["boundary_layer"] = e.boundary_layer;
+          m["chi"]            = e.chi;
+          m["c_G"]            = e.c_G;
+          m["points"]         = e.n_points;
+          m["largest"]        = e.largest;
+          JsonValue at        = JsonValue::array();
+          for (const double x : e.largest_at)
+            at.push_back(x);
+          m["largest_at"] = at;
+          if (e.has_true_error)
+            {
+              m["true_error"]    = e.true_error;
+              m["true_relative"] = e.true_relative;
+              m["effectivity"]   = e.effectivity;
+            }
+        }
     }
   } // namespace
 

@@ -355,7 +355,9 @@ namespace ltn
         // meant to move a face of its neighbour instead.
         for (const auto &box : boxes)
           for (unsigned int d = 0; d < dim; ++d)
-            check_input(box.upper[d] - box.lower[d] >= overlap_width - tol,
+            check_input(box.upper[d] - box.lower[d] >= overlap_width - tol ||
+                          (std::abs(box.lower[d] - body.lower[d]) <= tol &&
+                           std::abs(box.upper[d] - body.upper[d]) <= tol),
                         "Geometry/Nonlocal regions",
                         box_to_string(box),
                         "boxes at least as thick as Geometry/Overlap width (" +

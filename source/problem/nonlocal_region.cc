@@ -383,7 +383,9 @@ namespace ltn
                                   0.5 * (cell.lower[d] + cell.upper[d])) -
                  planes.begin() - 1;
         }
-      has_shrunk_part[label[region_cells.cell(j)]] = true;
+      const std::size_t piece = label[region_cells.cell(j)];
+      AssertThrow(piece != unlabelled, ExcInternalError());
+      has_shrunk_part[piece] = true;
     });
     return std::all_of(has_shrunk_part.begin(),
                        has_shrunk_part.end(),
@@ -460,6 +462,34 @@ namespace ltn
     std::sort(result.begin(), result.end());
     result.erase(std::unique(result.begin(), result.end()), result.end());
     return result;
+  }
+
+
+
+  template <int dim>
+  bool
+  NonlocalRegion<dim>::shrunk_region_crosses(const unsigned int d,
+                                             const double       plane) const
+  {
+    // Through a cell of S, or along a plane of the grid between two.
+    const auto &planes  = shrunk_cells.planes[d];
+    bool        crosses = false;
+    shrunk_cells.for_each_cell([&](const std::array<unsigned int, dim> &i) {
+      if (!shrunk_cells.flag[shrunk_cells.cell(i)])
+        return;
+      const bool through = planes[i[d]] < plane - tolerance &&
+                           planes[i[d] + 1] > plane + tolerance;
+      bool along = false;
+      if (std::abs(planes[i[d] + 1] - plane) <= tolerance &&
+          i[d] + 2 < planes.size())
+        {
+          auto next = i;
+          ++next[d];
+          along = shrunk_cells.flag[shrunk_cells.cell(next)];
+        }
+      crosses = crosses || through || along;
+    });
+    return crosses;
   }
 
 

@@ -62,12 +62,19 @@ namespace ltn
       std::unique_ptr<Nonlocal>
       make_nonlocal() const
       {
+        return make_nonlocal(geometry);
+      }
+
+      /** The level's nonlocal model on @p layout (kept alive by the caller). */
+      std::unique_ptr<Nonlocal>
+      make_nonlocal(const Geometry<dim> &layout) const
+      {
         if constexpr (dim == 1)
           return std::make_unique<NonlocalWeakForm1D>(
-            geometry, kernel, nonlocal_parameters.degree, h);
+            layout, kernel, nonlocal_parameters.degree, h);
         else
           return std::make_unique<ParticleDiffusion<dim>>(
-            geometry,
+            layout,
             kernel,
             nonlocal_parameters.particle_spacing(h),
             communicator);
@@ -92,6 +99,13 @@ namespace ltn
           nonlocal.assemble(*data.nonlocal_rhs,
                             *data.volume_constraint_data,
                             matrix_free);
+      }
+
+      /** Is face @p face of the body a Dirichlet face? */
+      bool
+      fully_dirichlet(const unsigned int face) const
+      {
+        return local_parameters.dirichlet_faces.count(face) == 1;
       }
 
       void

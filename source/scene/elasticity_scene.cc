@@ -117,17 +117,12 @@ namespace ltn
           if (geometry.has_nonlocal_model())
             {
               std::string holes;
-              bool        through_hole = false;
               for (const auto &[lower, upper] :
                    geometry.nonlocal_region().shrunk_extent(d))
-                {
-                  through_hole =
-                    through_hole || (c > lower + geometry.tolerance() &&
-                                     c < upper - geometry.tolerance());
-                  holes += (holes.empty() ? "" : " and ") + to_string(lower) +
-                           " < " + "xyz"[d] + " < " + to_string(upper);
-                }
-              check_input(!through_hole,
+                holes += (holes.empty() ? "" : " and ") + to_string(lower) +
+                         " < " + "xyz"[d] + " < " + to_string(upper);
+              check_input(!geometry.nonlocal_region().shrunk_region_crosses(d,
+                                                                            c),
                           parameter,
                           item,
                           "planes that the local mesh covers whole: outside " +
@@ -196,7 +191,14 @@ namespace ltn
       std::unique_ptr<Nonlocal>
       make_nonlocal() const
       {
-        return std::make_unique<Nonlocal>(geometry,
+        return make_nonlocal(geometry);
+      }
+
+      /** The level's nonlocal model on @p layout (kept alive by the caller). */
+      std::unique_ptr<Nonlocal>
+      make_nonlocal(const Geometry<dim> &layout) const
+      {
+        return std::make_unique<Nonlocal>(layout,
                                           influence,
                                           nonlocal_parameters.particle_spacing(
                                             h),
@@ -223,6 +225,14 @@ namespace ltn
         nonlocal.assemble(*f.body_force,
                           *f.volume_constraint_data,
                           matrix_free);
+      }
+
+      /** Is face @p face of the body Dirichlet in every component? */
+      bool
+      fully_dirichlet(const unsigned int face) const
+      {
+        return local_parameters.dirichlet_mask(face, dim)
+                 .n_selected_components() == dim;
       }
 
       void

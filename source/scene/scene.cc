@@ -1,4 +1,7 @@
+#include <ltn/base/input_error.h>
 #include <ltn/scene/scene.h>
+
+#include <cmath>
 
 namespace ltn
 {
@@ -18,6 +21,30 @@ namespace ltn
                         "true",
                         Patterns::Bool(),
                         "Write the fields of every level as VTU files.");
+    }
+    prm.leave_subsection();
+    prm.enter_subsection("Postprocess");
+    {
+      prm.declare_entry(
+        "Model error estimate",
+        "false",
+        Patterns::Bool(),
+        "Estimate the modeling error of a coupled 2D or 3D level: the "
+        "residual of the nonlocal model on the whole body at the composite "
+        "field (u_n on the nonlocal region, u_l elsewhere), near the body "
+        "outside the nonlocal region; its short-wave part, a lower bound of "
+        "the error in energy against the nonlocal model on the whole body "
+        "(doc/model_adaptivity.md). Needs the particle spacing to divide the "
+        "offset of the nonlocal region from the body's lower corner.");
+      prm.declare_entry(
+        "True model error",
+        "false",
+        Patterns::Bool(),
+        "Also solve the nonlocal model on the whole body at each level and "
+        "report the true modeling error in energy, ||u_* - w||, and the "
+        "estimate's effectivity (estimate / true error). Costs the "
+        "whole-body nonlocal solve; as the estimate, a coupled 2D or 3D "
+        "scene.");
     }
     prm.leave_subsection();
   }
@@ -46,6 +73,43 @@ namespace ltn
     output_directory = prm.get("Directory");
     write_vtu        = prm.get_bool("Write VTU");
     prm.leave_subsection();
+    prm.enter_subsection("Postprocess");
+    model_error_estimate = prm.get_bool("Model error estimate");
+    true_model_error     = prm.get_bool("True model error");
+    prm.leave_subsection();
+    if (model_error_estimate || true_model_error)
+      {
+        const std::string parameter = true_model_error ?
+                                        "Postprocess/True model error" :
+                                        "Postprocess/Model error estimate";
+        check_input(dim > 1 &&
+                      geometry.models == Geometry<dim>::Models::coupled,
+                    parameter,
+                    "true",
+                    "a coupled scene in 2D or 3D (the estimate compares the "
+                    "coupled solution with the nonlocal model on the whole "
+                    "body)");
+        // The whole body's lattice must hold the coupled one's particles.
+        const Tensor<1, dim> offset =
+          geometry.nonlocal_region().bounding_box().lower - geometry.body.lower;
+        for (unsigned int level = 0; level < discretization.n_levels; ++level)
+          {
+            const double spacing = nonlocal_parameters.particle_spacing(
+              discretization.mesh_size(level));
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const double n = offset[d] / spacing;
+                check_input(
+                  std::abs(n - std::round(n)) < 1e-8 * std::max(1., n),
+                  "Nonlocal model/Particle spacing to mesh size ratio",
+                  to_string(nonlocal_parameters.spacing_ratio),
+                  "with " + parameter +
+                    ", a spacing that divides the offset of the "
+                    "nonlocal region from the body's lower corner (" +
+                    to_string(offset[d]) + ")");
+              }
+          }
+      }
   }
 
 

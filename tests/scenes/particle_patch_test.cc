@@ -10,13 +10,7 @@
 
 namespace
 {
-  // FE_Q(2) needs a particle per nodal spacing h/2 in the overlap.
-  const std::vector<std::string> quadratic_2d = {
-    "Local model/Finite element degree=2",
-    "Nonlocal model/Particle spacing to mesh size ratio=0.5",
-    "Problem data/Exact solution=x^2 + x*y - 0.5*y^2 + x",
-    "Problem data/Nonlocal right-hand side=-1",
-    "Problem data/Local right-hand side=-1"};
+  const std::vector<std::string> &quadratic_2d = quadratic_2d_patch;
 
   const std::vector<std::string> quadratic_3d = {
     "Local model/Finite element degree=2",

@@ -15,6 +15,17 @@
 #include <string>
 #include <vector>
 
+/**
+ * diffusion_2d_patch made quadratic: FE_Q(2), which needs a particle per
+ * nodal spacing h/2, and a quadratic solution.
+ */
+inline const std::vector<std::string> quadratic_2d_patch = {
+  "Local model/Finite element degree=2",
+  "Nonlocal model/Particle spacing to mesh size ratio=0.5",
+  "Problem data/Exact solution=x^2 + x*y - 0.5*y^2 + x",
+  "Problem data/Nonlocal right-hand side=-1",
+  "Problem data/Local right-hand side=-1"};
+
 struct SceneRun
 {
   ltn::RunSummary                    summary;

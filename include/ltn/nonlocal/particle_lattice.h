@@ -3,6 +3,8 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 
+#include <deal.II/dofs/dof_handler.h>
+
 #include <ltn/base/discrete_model.h>
 #include <ltn/problem/geometry.h>
 
@@ -197,5 +199,47 @@ namespace ltn
         if (d == dim)
           return;
       }
+  }
+
+
+
+  /**
+   * Call `f(cell, index, number, unit)` for every particle of @p lattice in
+   * a locally owned cell of @p dofs' mesh (Cartesian: cells are
+   * axis-parallel boxes), `unit` its position in the cell's unit
+   * coordinates. Each particle is visited in the one cell that holds it in
+   * `[lower - tolerance, upper - tolerance)`, closed on faces at the mesh's
+   * boundary: every rank visits its own particles, once.
+   */
+  template <int dim, typename F>
+  void
+  for_each_in_owned_cells(const ParticleLattice<dim> &lattice,
+                          const DoFHandler<dim>      &dofs,
+                          const double                tolerance,
+                          const F                    &f)
+  {
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const Point<dim> lower = cell->vertex(0);
+          const Point<dim> upper =
+            cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
+          lattice.for_each_in_box(
+            lower,
+            upper,
+            tolerance,
+            [&](const auto &index, const types::global_dof_index number) {
+              const Point<dim> x = lattice.position(index);
+              Point<dim>       unit;
+              for (unsigned int d = 0; d < dim; ++d)
+                {
+                  if (x[d] >= upper[d] - tolerance &&
+                      !cell->face(2 * d + 1)->at_boundary())
+                    return;
+                  unit[d] = (x[d] - lower[d]) / (upper[d] - lower[d]);
+                }
+              f(cell, index, number, unit);
+            });
+        }
   }
 } // namespace ltn

@@ -16,6 +16,43 @@ namespace ltn
   using namespace dealii;
 
   /** What one refinement level of a run measured. */
+  /**
+   * The short-wave model-error estimate of a coupled level
+   * (`Postprocess/Model error estimate`, estimate_model_error()).
+   */
+  struct ModelErrorRecord
+  {
+    bool computed = false;
+    /** `eta_0 = (sum_E V |r_i|^2 / chi / c_G)^(1/2)`. */
+    double estimate = 0;
+    /** `eta_0` over the energy norm of the composite field. */
+    double relative = 0;
+    /**
+     * The same sum within the interaction range of the body's Dirichlet
+     * faces, not in `estimate`: the two problems differ there whatever the
+     * nonlocal region (a volume constraint against a boundary value).
+     */
+    double boundary_layer = 0;
+    /** The diagonal of the nonlocal operator at an uncut interior point. */
+    double chi = 0;
+    /** The largest eigenvalue of the operator over its diagonal. */
+    double c_G = 0;
+    /** The number of lattice points the residual is evaluated at. */
+    types::global_dof_index n_points = 0;
+    /**
+     * With `Postprocess/True model error`: `||u_* - w||_{A_*}` against the
+     * nonlocal model solved on the whole body, relative as `relative` is,
+     * and `estimate / true_error`.
+     */
+    bool   has_true_error = false;
+    double true_error     = 0;
+    double true_relative  = 0;
+    double effectivity    = 0;
+    /** The largest contribution of one point, and where it lies. */
+    double              largest = 0;
+    std::vector<double> largest_at;
+  };
+
   struct LevelRecord
   {
     double h = 0;
@@ -45,7 +82,8 @@ namespace ltn
      * forces, applied forces, crack openings), written as `mechanics`;
      * null if nothing.
      */
-    JsonValue extras;
+    JsonValue        extras;
+    ModelErrorRecord model_error;
     /** Wall time per phase, seconds, in the order the phases ran. */
     std::vector<std::pair<std::string, double>> timings;
   };

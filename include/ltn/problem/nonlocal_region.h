@@ -110,6 +110,10 @@ namespace ltn
     std::vector<double>
     shrunk_face_coordinates(const unsigned int d) const;
 
+    /** Does the plane `x_d = plane` cut a cell of `S` in two? */
+    bool
+    shrunk_region_crosses(const unsigned int d, const double plane) const;
+
     /**
      * The projection of `S` onto axis @p d: disjoint open intervals in
      * increasing order, touching ones merged.

@@ -123,7 +123,11 @@ namespace ltn
     Discretization       discretization;
     CouplingParameters   coupling_parameters;
     bool                 write_vtu = true;
-    std::string          output_directory;
+    /** `Postprocess/Model error estimate`. */
+    bool model_error_estimate = false;
+    /** `Postprocess/True model error`. */
+    bool        true_model_error = false;
+    std::string output_directory;
 
   private:
     std::vector<CouplingSolution> solutions;

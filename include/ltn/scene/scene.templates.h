@@ -11,6 +11,7 @@
 #include <ltn/output/field_output.h>
 #include <ltn/output/nonlocal_output.h>
 #include <ltn/scene/level_solve.h>
+#include <ltn/scene/model_error.h>
 #include <ltn/scene/scene.h>
 #include <ltn/scene/solver_choice.h>
 
@@ -186,6 +187,54 @@ namespace ltn
           nonlocal.get(), local.get(), solution, local_field, record);
         timer.leave_subsection();
 
+        if constexpr (dim > 1)
+          if (model_error_estimate || true_model_error)
+            {
+              enter("model error estimate");
+              // The nonlocal model of the level on the whole body: the
+              // reference whose residual at the composite field is the
+              // estimate's, solved for the true error.
+              Geometry<dim> whole_body = geometry;
+              whole_body.models        = Geometry<dim>::Models::nonlocal_only;
+              whole_body.set_nonlocal_boxes({geometry.body});
+              const auto         reference = physics.make_nonlocal(whole_body);
+              const SolverChoice reference_choice =
+                choose_solvers(physics.coupling(),
+                               nonlocal_parameters.operator_storage,
+                               reference->get_model().owned.size(),
+                               dim,
+                               false);
+              physics.assemble(*reference,
+                               !true_model_error ||
+                                 reference_choice.matrix_free);
+              CouplingSolution reference_solution;
+              if (true_model_error)
+                {
+                  LevelRecord reference_record;
+                  reference_solution = solve_level(&reference->get_model(),
+                                                   nullptr,
+                                                   OverlapQuadrature<dim>(),
+                                                   reference_choice.coupling,
+                                                   reference_record,
+                                                   progress);
+                }
+              std::array<bool, 2 * dim> dirichlet;
+              for (unsigned int f = 0; f < 2 * dim; ++f)
+                dirichlet[f] = physics.fully_dirichlet(f);
+              record.model_error = estimate_model_error(
+                geometry,
+                *nonlocal,
+                solution.fields[nonlocal_model],
+                local->get_dof_handler(),
+                local_field,
+                *reference,
+                physics.collar_depth,
+                dirichlet,
+                true_model_error ? &reference_solution.fields[nonlocal_model] :
+                                   nullptr);
+              timer.leave_subsection();
+            }
+
         if (!output_directory.empty() && write_vtu)
           {
             enter("output");
@@ -239,6 +288,18 @@ namespace ltn
             << ", J = " << std::scientific << std::setprecision(3)
             << record.mismatch_J << std::defaultfloat << std::endl
             << report;
+        if (record.model_error.computed)
+          out << "  model error estimate (short waves, a lower bound): "
+              << std::scientific << std::setprecision(3)
+              << record.model_error.estimate << ", relative "
+              << record.model_error.relative;
+        if (record.model_error.has_true_error)
+          out << "; true error " << record.model_error.true_error
+              << ", relative " << record.model_error.true_relative
+              << ", effectivity " << std::defaultfloat << std::setprecision(3)
+              << record.model_error.effectivity;
+        if (record.model_error.computed)
+          out << std::defaultfloat << std::endl;
         summary.levels.push_back(record);
       }
   }

@@ -120,55 +120,37 @@ namespace ltn
     const double                         tol     = geometry.tolerance();
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
 
-    // Each point belongs to the one locally owned cell that holds it in the
-    // half-open box [lower - tol, upper - tol) (closed on faces at the
-    // boundary of the mesh), so every rank holds its own points once.
     OverlapQuadrature<dim> overlap;
-    for (const auto &cell : local_dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          // The mesh is Cartesian: cells are axis-parallel boxes.
-          const Point<dim> lower = cell->vertex(0);
-          const Point<dim> upper =
-            cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
-          cell->get_dof_indices(dofs);
-          lattice.for_each_in_box(
-            lower,
-            upper,
-            tol,
-            [&](const auto &index, const types::global_dof_index number) {
-              const Point<dim> x = lattice.position(index);
-              Point<dim>       unit;
-              for (unsigned int d = 0; d < dim; ++d)
-                {
-                  if (x[d] >= upper[d] - tol &&
-                      !cell->face(2 * d + 1)->at_boundary())
-                    return;
-                  unit[d] = (x[d] - lower[d]) / (upper[d] - lower[d]);
-                }
-              // Omega_b = Omega_l ∩ (Omega_n ∪ control collar): the control
-              // particles are the control collar (all inside Omega_l).
-              const DofRole role = nonlocal.role(index);
-              if (role == DofRole::fixed ||
-                  (role == DofRole::free && !geometry.in_local_region(x)))
-                return;
-              for (unsigned int c = 0;
-                   c < ParticleModel<dim>::n_field_components;
-                   ++c)
-                {
-                  overlap.points.push_back(x);
-                  overlap.weights.push_back(nonlocal.particle_volume());
-                  overlap.nonlocal_rows.push_back(
-                    {{ParticleModel<dim>::dof(number, c), 1.}});
-                  SparseRow row;
-                  for (unsigned int i = 0; i < dofs.size(); ++i)
-                    if (fe.system_to_component_index(i).first == c)
-                      row.emplace_back(dofs[i],
-                                       fe.shape_value_component(i, unit, c));
-                  overlap.local_rows.push_back(std::move(row));
-                }
-            });
-        }
+    for_each_in_owned_cells(
+      lattice,
+      local_dofs,
+      tol,
+      [&](const auto                   &cell,
+          const auto                   &index,
+          const types::global_dof_index number,
+          const Point<dim>             &unit) {
+        const Point<dim> x = lattice.position(index);
+        cell->get_dof_indices(dofs);
+        // Omega_b = Omega_l ∩ (Omega_n ∪ control collar): the control
+        // particles are the control collar (all inside Omega_l).
+        const DofRole role = nonlocal.role(index);
+        if (role == DofRole::fixed ||
+            (role == DofRole::free && !geometry.in_local_region(x)))
+          return;
+        for (unsigned int c = 0; c < ParticleModel<dim>::n_field_components;
+             ++c)
+          {
+            overlap.points.push_back(x);
+            overlap.weights.push_back(nonlocal.particle_volume());
+            overlap.nonlocal_rows.push_back(
+              {{ParticleModel<dim>::dof(number, c), 1.}});
+            SparseRow row;
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (fe.system_to_component_index(i).first == c)
+                row.emplace_back(dofs[i], fe.shape_value_component(i, unit, c));
+            overlap.local_rows.push_back(std::move(row));
+          }
+      });
     return overlap;
   }
 

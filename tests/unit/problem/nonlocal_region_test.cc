@@ -132,6 +132,13 @@ TEST_CASE("L-shape: max-norm band at the concave corner, none where boxes "
     u.shrunk_region_contains({Point<2>(0.75, 0.7), Point<2>(0.95, 0.95)}));
   CHECK(u.every_piece_has_shrunk_part());
   CHECK_FALSE(u.covers_body());
+  // Planes through S (a section plane there would miss the hole's force):
+  // through its cells, and along the grid plane y = 0.875 between its
+  // arms' cells; not along its faces nor outside it.
+  CHECK(u.shrunk_region_crosses(0, 1));
+  CHECK(u.shrunk_region_crosses(1, 0.875));
+  CHECK_FALSE(u.shrunk_region_crosses(0, 1.375));
+  CHECK_FALSE(u.shrunk_region_crosses(1, 1.5));
 
   // Faces with body outside the region beyond them: all but the glued
   // parts; the upper face of the first box is exposed right of x = 1.
