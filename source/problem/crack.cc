@@ -232,7 +232,8 @@ namespace ltn
                     "Cracks/Corners",
                     extent,
                     "cracks inside the nonlocal region (Geometry/Nonlocal "
-                    "region lower/upper corner): the local model has none");
+                    "regions, or its lower/upper corner): the local model "
+                    "has none");
         // The local model covers the overlap, uncracked: a crack there
         // would have the coupling match a cracked field to an uncracked one.
         std::string within = "Geometry/Overlap width on its faces inside the "

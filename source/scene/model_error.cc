@@ -86,7 +86,8 @@ namespace ltn
                        const ParticleModel                 &reference,
                        const double                         interaction_range,
                        const std::array<bool, 2 * dim>     &dirichlet_faces,
-                       const TrilinosWrappers::MPI::Vector *reference_solution)
+                       const TrilinosWrappers::MPI::Vector *reference_solution,
+                       ModelErrorField<dim>                *field)
   {
     using LatticeIndex             = typename ParticleModel::LatticeIndex;
     constexpr unsigned int n_comp  = ParticleModel::n_components;
@@ -321,6 +322,12 @@ namespace ltn
             squared += r * r;
           }
         const double contribution = volume * squared / chi / c_G;
+        if (field)
+          {
+            field->points.push_back(x);
+            field->indicator.push_back(contribution);
+            field->boundary_layer.push_back(near_face ? 1. : 0.);
+          }
         if (near_face)
           {
             boundary_sum += contribution;
@@ -384,7 +391,8 @@ namespace ltn
     const Model &,                                \
     double,                                       \
     const std::array<bool, 2 * dim> &,            \
-    const TrilinosWrappers::MPI::Vector *);
+    const TrilinosWrappers::MPI::Vector *,        \
+    ModelErrorField<dim> *);
   LTN_INSTANTIATE(2, ParticleDiffusion<2>)
   LTN_INSTANTIATE(3, ParticleDiffusion<3>)
   LTN_INSTANTIATE(2, ParticleElasticity<2>)

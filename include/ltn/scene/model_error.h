@@ -8,10 +8,24 @@
 #include <ltn/problem/geometry.h>
 
 #include <array>
+#include <vector>
 
 namespace ltn
 {
   using namespace dealii;
+
+  /**
+   * The estimate's terms point by point, this rank's, for the output: the
+   * points of `E` and of the strip along Dirichlet faces, their terms `V
+   * |r_i|^2 / chi / c_G`, and 1 in the strip, 0 elsewhere.
+   */
+  template <int dim>
+  struct ModelErrorField
+  {
+    std::vector<Point<dim>> points;
+    std::vector<double>     indicator;
+    std::vector<double>     boundary_layer;
+  };
 
   /**
    * The short-wave model-error estimate of a coupled solution
@@ -35,8 +49,8 @@ namespace ltn
    * with its data); its lattice must be the coupled one's shifted by whole
    * spacings. @p local_field is ghosted. With @p reference_solution (the
    * reference's solution, `u_*`), also the true modeling error
-   * `||u_* - w||_{A_*}` and the effectivity `eta_0 / ||u_* - w||`.
-   * Collective.
+   * `||u_* - w||_{A_*}` and the effectivity `eta_0 / ||u_* - w||`. With
+   * @p field, the terms point by point. Collective.
    */
   template <int dim, typename ParticleModel>
   ModelErrorRecord
@@ -48,5 +62,6 @@ namespace ltn
                        const ParticleModel                 &reference,
                        const double                         interaction_range,
                        const std::array<bool, 2 * dim>     &dirichlet_faces,
-                       const TrilinosWrappers::MPI::Vector *reference_solution);
+                       const TrilinosWrappers::MPI::Vector *reference_solution,
+                       ModelErrorField<dim>                *field);
 } // namespace ltn

@@ -138,7 +138,7 @@ namespace ltn
      */
     struct WrittenFiles
     {
-      std::vector<std::pair<double, std::string>> nonlocal, local;
+      std::vector<std::pair<double, std::string>> nonlocal, local, model_error;
     };
 
     /**

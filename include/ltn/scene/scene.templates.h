@@ -10,6 +10,8 @@
 #include <ltn/coupling/system/overlap_quadrature.h>
 #include <ltn/output/field_output.h>
 #include <ltn/output/nonlocal_output.h>
+#include <ltn/output/parallel_vtu.h>
+#include <ltn/output/point_cloud_output.h>
 #include <ltn/scene/level_solve.h>
 #include <ltn/scene/model_error.h>
 #include <ltn/scene/scene.h>
@@ -187,6 +189,7 @@ namespace ltn
           nonlocal.get(), local.get(), solution, local_field, record);
         timer.leave_subsection();
 
+        ModelErrorField<dim> model_error_field;
         if constexpr (dim > 1)
           if (model_error_estimate || true_model_error)
             {
@@ -231,7 +234,8 @@ namespace ltn
                 physics.collar_depth,
                 dirichlet,
                 true_model_error ? &reference_solution.fields[nonlocal_model] :
-                                   nullptr);
+                                   nullptr,
+                &model_error_field);
               timer.leave_subsection();
             }
 
@@ -271,6 +275,22 @@ namespace ltn
                 write_level_collection(directory + physics.local_file + ".pvd",
                                        files.local);
               }
+            if constexpr (dim > 1)
+              if (record.model_error.computed)
+                {
+                  PointCloudOutput<dim> points(
+                    model_error_field.points,
+                    {{"model_error_indicator", model_error_field.indicator},
+                     {"boundary_layer", model_error_field.boundary_layer}});
+                  files.model_error.emplace_back(
+                    step,
+                    write_parallel_vtu(points,
+                                       output_directory,
+                                       "model_error" + suffix,
+                                       MPI_COMM_WORLD));
+                  write_level_collection(directory + "model_error.pvd",
+                                         files.model_error);
+                }
             if (physics.grouped_collection)
               write_grouped_collection(directory + "scene.pvd",
                                        {files.nonlocal, files.local});
