@@ -220,3 +220,18 @@ TEST_CASE("a crack in one arm of a T: rigid motions to round-off",
                "Problem data/Body force=0; 0"},
               4e-5);
 }
+
+
+
+// Not in the two-rank run (its filter leaves this tag out): the 3D
+// full-space factorization of LPS takes over a minute.
+TEST_CASE("3D LPS linear patch test on an L-shape, full-space direct",
+          "[particles][full space 3d]")
+{
+  // max |u| = 1e-3 x at x = 3.
+  check_patch("lps_bar_3d_linear_patch",
+              {"Geometry/Nonlocal regions=1.25,0.25,0.25,1.75,0.75,0.75; "
+               "1.75,0.25,0.25,2.125,0.5,0.75"},
+              3e-3,
+              {"full space direct"});
+}
