@@ -3,6 +3,7 @@
 #include <ltn/base/input_error.h>
 #include <ltn/problem/crack.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace ltn
@@ -225,10 +226,20 @@ namespace ltn
           "a crack reaching from (" + to_string(box.lower[0]) + ", " +
           to_string(box.lower[1]) + ", ...) to (" + to_string(box.upper[0]) +
           ", " + to_string(box.upper[1]) + ", ...)";
+        // The crack's corners (the fourth of a parallelogram too) in
+        // Omega_n; the test against S below sees the rest of the crack.
         const NonlocalRegion<dim> &region = geometry.nonlocal_region();
+        std::vector<Point<dim>>    ends(crack.corners.begin(),
+                                     crack.corners.end());
+        if (dim == 3)
+          ends.push_back(crack.corners[1] +
+                         (crack.corners[dim - 1] - crack.corners[0]));
         check_input(geometry.has_nonlocal_model() &&
-                      region.contains(box.lower, tol) &&
-                      region.contains(box.upper, tol),
+                      std::all_of(ends.begin(),
+                                  ends.end(),
+                                  [&](const Point<dim> &p) {
+                                    return region.contains(p, tol);
+                                  }),
                     "Cracks/Corners",
                     extent,
                     "cracks inside the nonlocal region (Geometry/Nonlocal "
@@ -248,8 +259,40 @@ namespace ltn
                         to_string(x[0].second) + ", " + to_string(y[0].second) +
                         ", ...)";
           }
-        check_input(!geometry.has_local_model() ||
-                      region.shrunk_region_contains(box),
+        // An axis-parallel crack is its bounding box: exact. Another is
+        // tested at points of a grid on it finer than a quarter of the
+        // finest particle spacing (its box may reach out of an L's S).
+        bool axis_parallel = false;
+        for (unsigned int d = 0; d < dim; ++d)
+          axis_parallel = axis_parallel || box.upper[d] - box.lower[d] <= tol;
+        bool in_shrunk_region = true;
+        if (geometry.has_local_model() && axis_parallel)
+          in_shrunk_region = region.shrunk_region_contains(box);
+        else if (geometry.has_local_model())
+          {
+            AssertThrow(!spacings.empty(), ExcInternalError());
+            const double finest =
+              *std::min_element(spacings.begin(), spacings.end());
+            std::array<unsigned int, dim - 1> n;
+            for (unsigned int e = 0; e + 1 < dim; ++e)
+              n[e] = static_cast<unsigned int>(
+                std::ceil(crack.corners[e + 1].distance(crack.corners[0]) /
+                          (finest / 4)));
+            for (unsigned int i = 0; i <= n[0] && in_shrunk_region; ++i)
+              for (unsigned int j = 0;
+                   j <= (dim == 3 ? n[dim - 2] : 0u) && in_shrunk_region;
+                   ++j)
+                {
+                  Point<dim> p =
+                    crack.corners[0] + (crack.corners[1] - crack.corners[0]) *
+                                         (static_cast<double>(i) / n[0]);
+                  if (dim == 3)
+                    p += (crack.corners[dim - 1] - crack.corners[0]) *
+                         (static_cast<double>(j) / n[dim - 2]);
+                  in_shrunk_region = region.shrunk_region_contains({p, p});
+                }
+          }
+        check_input(in_shrunk_region,
                     "Cracks/Corners",
                     extent,
                     "cracks outside the overlap, which the local model covers "

@@ -224,7 +224,8 @@ TEST_CASE("a crack in one arm of a T: rigid motions to round-off",
 
 
 // Not in the two-rank run (its filter leaves this tag out): the 3D
-// full-space factorization of LPS takes over a minute.
+// full-space factorization of LPS is the costliest patch test, and the
+// reduced-space tests above cover two ranks.
 TEST_CASE("3D LPS linear patch test on an L-shape, full-space direct",
           "[particles][full space 3d]")
 {
