@@ -50,10 +50,6 @@ namespace ltn
       if (geometry.has_nonlocal_model())
         for (unsigned int d = 0; d < dim; ++d)
           hole_faces[d] = geometry.nonlocal_region().shrunk_face_coordinates(d);
-      const auto aligned = [&](const double length, const double size) {
-        const double n = length / size;
-        return std::abs(n - std::round(n)) < 1e-8 * std::max(1., n);
-      };
       unsigned int steps = 0;
       while (steps < 20)
         {
@@ -62,9 +58,10 @@ namespace ltn
           for (unsigned int d = 0; d < dim; ++d)
             {
               const double origin = geometry.body.lower[d];
-              fits = fits && aligned(geometry.body.upper[d] - origin, size);
+              fits                = fits &&
+                     is_whole_multiple(geometry.body.upper[d] - origin, size);
               for (const double face : hole_faces[d])
-                fits = fits && aligned(face - origin, size);
+                fits = fits && is_whole_multiple(face - origin, size);
             }
           if (!fits)
             break;

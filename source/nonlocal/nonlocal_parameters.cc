@@ -156,15 +156,12 @@ namespace ltn
               std::make_pair(box.lower[d] - origin[d],
                              std::string("the offset between the nonlocal "
                                          "region's boxes "))})
-          {
-            const double n = length / spacing;
-            check_input(std::abs(n - std::round(n)) < 1e-8 * std::max(n, 1.),
-                        "Nonlocal model/Particle spacing to mesh size ratio",
-                        to_string(spacing_ratio),
-                        "the particle spacing " + to_string(spacing) +
-                          " must divide " + what + to_string(n * spacing) +
-                          " a whole number of times");
-          }
+          check_input(is_whole_multiple(length, spacing),
+                      "Nonlocal model/Particle spacing to mesh size ratio",
+                      to_string(spacing_ratio),
+                      "the particle spacing " + to_string(spacing) +
+                        " must divide " + what + to_string(length) +
+                        " a whole number of times");
   }
 
   template <int dim>

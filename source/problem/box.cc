@@ -5,6 +5,15 @@
 
 namespace ltn
 {
+  bool
+  is_whole_multiple(const double length, const double size)
+  {
+    const double n = length / size;
+    return std::abs(n - std::round(n)) < 1e-8 * std::max(1., n);
+  }
+
+
+
   template <int dim>
   bool
   Box<dim>::contains(const Point<dim> &p, const double tolerance) const

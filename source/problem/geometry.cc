@@ -47,13 +47,6 @@ namespace ltn
              ", " + to_string(box.upper[d]) + "]";
       return s;
     }
-
-    bool
-    is_multiple(const double length, const double h)
-    {
-      const double n = length / h;
-      return std::abs(n - std::round(n)) < 1e-8 * std::max(1., n);
-    }
   } // namespace
 
 
@@ -283,7 +276,7 @@ namespace ltn
     if (models != Models::coupled)
       {
         for (unsigned int d = 0; d < dim; ++d)
-          check_input(is_multiple(body.upper[d] - body.lower[d], h),
+          check_input(is_whole_multiple(body.upper[d] - body.lower[d], h),
                       "Discretization/Mesh size",
                       to_string(h),
                       "the mesh size must divide the body's extent (" +
@@ -425,7 +418,7 @@ namespace ltn
     // Meshes of size h must resolve every interface of the layout.
     const auto check_multiple = [&](const double       length,
                                     const std::string &what) {
-      check_input(is_multiple(length, h),
+      check_input(is_whole_multiple(length, h),
                   "Discretization/Mesh size",
                   to_string(h),
                   "the mesh size must divide " + what + " (" +

@@ -97,17 +97,13 @@ namespace ltn
             const double spacing = nonlocal_parameters.particle_spacing(
               discretization.mesh_size(level));
             for (unsigned int d = 0; d < dim; ++d)
-              {
-                const double n = offset[d] / spacing;
-                check_input(
-                  std::abs(n - std::round(n)) < 1e-8 * std::max(1., n),
-                  "Nonlocal model/Particle spacing to mesh size ratio",
-                  to_string(nonlocal_parameters.spacing_ratio),
-                  "with " + parameter +
-                    ", a spacing that divides the offset of the "
-                    "nonlocal region from the body's lower corner (" +
-                    to_string(offset[d]) + ")");
-              }
+              check_input(is_whole_multiple(offset[d], spacing),
+                          "Nonlocal model/Particle spacing to mesh size ratio",
+                          to_string(nonlocal_parameters.spacing_ratio),
+                          "with " + parameter +
+                            ", a spacing that divides the offset of the "
+                            "nonlocal region from the body's lower corner (" +
+                            to_string(offset[d]) + ")");
           }
       }
   }

@@ -15,21 +15,15 @@
 #include <memory>
 #include <random>
 
+#include "box_layout.h"
+
 template <int dim>
 ltn::Geometry<dim>
 particle_layout()
 {
-  ltn::Geometry<dim> geometry;
-  ltn::Box<dim>      region;
-  for (unsigned int d = 0; d < dim; ++d)
-    {
-      geometry.body.upper[d] = (d == 0) ? 2 : 1;
-      region.lower[d]        = (d == 0) ? 0 : 0.25;
-      region.upper[d]        = (d == 0) ? 1.25 : 0.75;
-    }
-  geometry.overlap_width = 0.125;
-  geometry.set_nonlocal_boxes({region});
-  return geometry;
+  return box_layout<dim>(slab<dim>(0, 2, 0, 1),
+                         {slab<dim>(0, 1.25, 0.25, 0.75)},
+                         0.125);
 }
 
 /**

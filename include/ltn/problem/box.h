@@ -6,6 +6,13 @@ namespace ltn
 {
   using namespace dealii;
 
+  /**
+   * Is @p length a whole multiple of @p size, up to round-off? The test of
+   * every alignment of a layout with a mesh or a particle lattice.
+   */
+  bool
+  is_whole_multiple(const double length, const double size);
+
   /** An axis-aligned box `[lower, upper]`. */
   template <int dim>
   struct Box

@@ -11,6 +11,7 @@
 #include <ltn/output/run_summary.h>
 #include <ltn/problem/discretization.h>
 #include <ltn/problem/geometry.h>
+#include <ltn/scene/model_error.h>
 
 #include <functional>
 #include <string>
@@ -174,5 +175,22 @@ namespace ltn
               WrittenFiles       &files,
               ConditionalOStream &out,
               Progress           &progress);
+
+    /**
+     * The model-error estimate of a coupled level (2D, 3D) whose models
+     * @p nonlocal and @p local have the solution @p solution (@p local_field
+     * its local part, ghosted): against the level's nonlocal model on the
+     * whole body, built here, and solved with `Postprocess/True model
+     * error`. The terms point by point go to @p field.
+     */
+    template <typename Physics>
+    ModelErrorRecord
+    estimate_level_model_error(const Physics                       &physics,
+                               const typename Physics::Nonlocal    &nonlocal,
+                               const typename Physics::Local       &local,
+                               const CouplingSolution              &solution,
+                               const TrilinosWrappers::MPI::Vector &local_field,
+                               Progress                            &progress,
+                               ModelErrorField<dim> &field) const;
   };
 } // namespace ltn

@@ -13,7 +13,6 @@
 #include <ltn/output/parallel_vtu.h>
 #include <ltn/output/point_cloud_output.h>
 #include <ltn/scene/level_solve.h>
-#include <ltn/scene/model_error.h>
 #include <ltn/scene/scene.h>
 #include <ltn/scene/solver_choice.h>
 
@@ -194,48 +193,14 @@ namespace ltn
           if (model_error_estimate || true_model_error)
             {
               enter("model error estimate");
-              // The nonlocal model of the level on the whole body: the
-              // reference whose residual at the composite field is the
-              // estimate's, solved for the true error.
-              Geometry<dim> whole_body = geometry;
-              whole_body.models        = Geometry<dim>::Models::nonlocal_only;
-              whole_body.set_nonlocal_boxes({geometry.body});
-              const auto         reference = physics.make_nonlocal(whole_body);
-              const SolverChoice reference_choice =
-                choose_solvers(physics.coupling(),
-                               nonlocal_parameters.operator_storage,
-                               reference->get_model().owned.size(),
-                               dim,
-                               false);
-              physics.assemble(*reference,
-                               !true_model_error ||
-                                 reference_choice.matrix_free);
-              CouplingSolution reference_solution;
-              if (true_model_error)
-                {
-                  LevelRecord reference_record;
-                  reference_solution = solve_level(&reference->get_model(),
-                                                   nullptr,
-                                                   OverlapQuadrature<dim>(),
-                                                   reference_choice.coupling,
-                                                   reference_record,
-                                                   progress);
-                }
-              std::array<bool, 2 * dim> dirichlet;
-              for (unsigned int f = 0; f < 2 * dim; ++f)
-                dirichlet[f] = physics.fully_dirichlet(f);
-              record.model_error = estimate_model_error(
-                geometry,
-                *nonlocal,
-                solution.fields[nonlocal_model],
-                local->get_dof_handler(),
-                local_field,
-                *reference,
-                physics.collar_depth,
-                dirichlet,
-                true_model_error ? &reference_solution.fields[nonlocal_model] :
-                                   nullptr,
-                &model_error_field);
+              record.model_error =
+                estimate_level_model_error(physics,
+                                           *nonlocal,
+                                           *local,
+                                           solution,
+                                           local_field,
+                                           progress,
+                                           model_error_field);
               timer.leave_subsection();
             }
 
@@ -322,5 +287,61 @@ namespace ltn
           out << std::defaultfloat << std::endl;
         summary.levels.push_back(record);
       }
+  }
+
+
+
+  template <int dim>
+  template <typename Physics>
+  ModelErrorRecord
+  Scene<dim>::estimate_level_model_error(
+    const Physics                       &physics,
+    const typename Physics::Nonlocal    &nonlocal,
+    const typename Physics::Local       &local,
+    const CouplingSolution              &solution,
+    const TrilinosWrappers::MPI::Vector &local_field,
+    Progress                            &progress,
+    ModelErrorField<dim>                &field) const
+  {
+    // The nonlocal model of the level on the whole body: the reference
+    // whose residual at the composite field is the estimate's, solved for
+    // the true error.
+    Geometry<dim> whole_body = geometry;
+    whole_body.models        = Geometry<dim>::Models::nonlocal_only;
+    whole_body.set_nonlocal_boxes({geometry.body});
+    const auto         reference = physics.make_nonlocal(whole_body);
+    const SolverChoice choice =
+      choose_solvers(physics.coupling(),
+                     nonlocal_parameters.operator_storage,
+                     reference->get_model().owned.size(),
+                     dim,
+                     false);
+    physics.assemble(*reference, !true_model_error || choice.matrix_free);
+    CouplingSolution reference_solution;
+    if (true_model_error)
+      {
+        LevelRecord reference_record;
+        reference_solution = solve_level(&reference->get_model(),
+                                         nullptr,
+                                         OverlapQuadrature<dim>(),
+                                         choice.coupling,
+                                         reference_record,
+                                         progress);
+      }
+    std::array<bool, 2 * dim> dirichlet;
+    for (unsigned int f = 0; f < 2 * dim; ++f)
+      dirichlet[f] = physics.fully_dirichlet(f);
+    return estimate_model_error(geometry,
+                                nonlocal,
+                                solution.fields[nonlocal_model],
+                                local.get_dof_handler(),
+                                local_field,
+                                *reference,
+                                physics.collar_depth,
+                                dirichlet,
+                                true_model_error ?
+                                  &reference_solution.fields[nonlocal_model] :
+                                  nullptr,
+                                &field);
   }
 } // namespace ltn

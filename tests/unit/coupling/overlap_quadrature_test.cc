@@ -14,6 +14,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "box_layout.h"
 #include "seed_geometry.h"
 
 using namespace ltn;
@@ -74,15 +75,8 @@ namespace
   check_particle_overlap(const unsigned int degree, const double spacing)
   {
     // Omega_n = (0,1)^dim on the left of the body (0,2) x (0,1)^(dim-1).
-    Geometry<dim> geometry;
-    Box<dim>      region;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        geometry.body.upper[d] = (d == 0) ? 2 : 1;
-        region.upper[d]        = 1;
-      }
-    geometry.overlap_width = 0.25;
-    geometry.set_nonlocal_boxes({region});
+    const Geometry<dim> geometry =
+      box_layout<dim>(slab<dim>(0, 2, 0, 1), {slab<dim>(0, 1, 0, 1)}, 0.25);
     const double h = 1. / 8, eps = 2 * spacing;
 
     LocalParameters<dim> parameters;

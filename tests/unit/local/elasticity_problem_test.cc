@@ -27,6 +27,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "box_layout.h"
 #include "lu_difference.h"
 
 using namespace ltn;
@@ -373,11 +374,8 @@ namespace
   {
     Geometry<dim> geometry = box_geometry<dim>();
     geometry.models        = Geometry<dim>::Models::coupled;
-    Box<dim> region;
-    for (unsigned int d = 0; d < dim; ++d)
-      region.upper[d] = 1;
     geometry.overlap_width = 0.25;
-    geometry.set_nonlocal_boxes({region});
+    geometry.set_nonlocal_boxes({slab<dim>(0, 1, 0, 1)});
     // y- a roller: the traction acts on its other components.
     const LocalParameters<dim> parameters = parse_local_parameters<dim>(
       dim == 2 ? "x+, y-, y+" : "x+, y-, y+, z-, z+", "y-: y");

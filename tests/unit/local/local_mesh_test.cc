@@ -12,6 +12,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "box_layout.h"
+
 using namespace ltn;
 
 namespace
@@ -24,17 +26,9 @@ namespace
   Geometry<dim>
   plate_geometry()
   {
-    Geometry<dim> geometry;
-    Box<dim>      region;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        geometry.body.upper[d] = 2;
-        region.lower[d]        = (d == 0) ? 0.5 : 0.75;
-        region.upper[d]        = (d == 0) ? 1.5 : 1.25;
-      }
-    geometry.overlap_width = (dim == 2) ? 0.1 : 0.125;
-    geometry.set_nonlocal_boxes({region});
-    return geometry;
+    return box_layout<dim>(slab<dim>(0, 2, 0, 2),
+                           {slab<dim>(0.5, 1.5, 0.75, 1.25)},
+                           (dim == 2) ? 0.1 : 0.125);
   }
 
   /** The distance from the centre of a cell of size @p size to the box. */

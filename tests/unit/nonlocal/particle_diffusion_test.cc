@@ -11,6 +11,8 @@
 
 #include <cmath>
 
+#include "box_layout.h"
+
 using namespace ltn;
 
 namespace
@@ -20,16 +22,9 @@ namespace
   unit_layout()
   {
     // Omega_n = (0,1)^dim touching the body on its lower faces.
-    Geometry<dim> geometry;
-    Box<dim>      region;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        geometry.body.upper[d] = (d == 0) ? 2 : 1;
-        region.upper[d]        = 1;
-      }
-    geometry.overlap_width = 0.25;
-    geometry.set_nonlocal_boxes({region});
-    return geometry;
+    return box_layout<dim>(slab<dim>(0, 2, 0, 1),
+                           {slab<dim>(0, 1, 0, 1)},
+                           0.25);
   }
 
   /** max over free particles |A p - (-Laplace p)|, relative to max |A|. */

@@ -14,6 +14,8 @@
 #include <cmath>
 #include <random>
 
+#include "box_layout.h"
+
 using namespace ltn;
 
 namespace
@@ -23,17 +25,9 @@ namespace
   Geometry<dim>
   bar_layout()
   {
-    Geometry<dim> geometry;
-    Box<dim>      region;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        geometry.body.upper[d] = (d == 0) ? 2 : 1;
-        region.lower[d]        = 0.25;
-        region.upper[d]        = (d == 0) ? 1.25 : 0.75;
-      }
-    geometry.overlap_width = 0.125;
-    geometry.set_nonlocal_boxes({region});
-    return geometry;
+    return box_layout<dim>(slab<dim>(0, 2, 0, 1),
+                           {slab<dim>(0.25, 1.25, 0.25, 0.75)},
+                           0.125);
   }
 
   /** A displacement u_a = 1/2 x.H_a x + g_a.x + c_a (or W x + c). */

@@ -6,18 +6,14 @@
 
 #include <catch2/catch.hpp>
 
+#include "box_layout.h"
+
 using namespace ltn;
 
 TEST_CASE("a slanted crack in an L-shaped region", "[geometry]")
 {
-  // S, the L shrunk by 0.125 against the rest of the body, is
-  // (0.625, 1.375) x (0.625, 0.875) and (0.625, 0.875) x (0.875, 1.375).
-  Geometry<2> g;
-  g.body.upper    = Point<2>(2, 2);
-  g.overlap_width = 0.125;
-  g.set_nonlocal_boxes({{Point<2>(0.5, 0.5), Point<2>(1.5, 1)},
-                        {Point<2>(0.5, 1), Point<2>(1, 1.5)}});
-  const auto accepted = [&](const Point<2> &a, const Point<2> &b) {
+  const Geometry<2> g        = l_shape_layout();
+  const auto        accepted = [&](const Point<2> &a, const Point<2> &b) {
     CrackSet<2> set;
     Crack<2>    crack;
     crack.corners = {{a, b}};

@@ -10,6 +10,8 @@
 
 #include <cmath>
 
+#include "box_layout.h"
+
 using namespace ltn;
 
 namespace
@@ -90,11 +92,7 @@ TEST_CASE("L-shape: max-norm band at the concave corner, none where boxes "
           "touch",
           "[geometry]")
 {
-  Geometry<2> g;
-  g.body.upper    = Point<2>(2, 2);
-  g.overlap_width = 0.125;
-  g.set_nonlocal_boxes({{Point<2>(0.5, 0.5), Point<2>(1.5, 1)},
-                        {Point<2>(0.5, 1), Point<2>(1, 1.5)}});
+  const Geometry<2>        g = l_shape_layout();
   const NonlocalRegion<2> &u = g.nonlocal_region();
 
   // The depth is the max-norm distance to the body outside the region.
