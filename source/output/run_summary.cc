@@ -125,7 +125,9 @@ namespace ltn
       if (const ModelErrorRecord &e = level.model_error; e.computed)
         {
           JsonValue &m        = j["model_error"];
-          m["estimate_short"] = e.estimate;
+          m["estimate"]       = e.estimate;
+          m["estimate_short"] = e.estimate_short;
+          m["estimate_long"]  = e.estimate_long;
           m["relative"]       = e.relative;
           m["boundary_layer"] = e.boundary_layer;
           m["chi"]            = e.chi;
@@ -141,6 +143,12 @@ namespace ltn
               m["true_error"]    = e.true_error;
               m["true_relative"] = e.true_relative;
               m["effectivity"]   = e.effectivity;
+            }
+          if (e.has_region_error)
+            {
+              m["region_error"]       = e.region_error;
+              m["region_relative"]    = e.region_relative;
+              m["region_effectivity"] = e.region_effectivity;
             }
         }
     }
@@ -208,6 +216,50 @@ namespace ltn
             convergence.push_back(entry);
           }
         j["convergence"] = convergence;
+      }
+
+    if (model_adaptivity.enabled)
+      {
+        JsonValue &m     = j["model_adaptivity"];
+        m["tolerance"]   = model_adaptivity.tolerance;
+        m["block_size"]  = model_adaptivity.block_size;
+        m["stopped"]     = model_adaptivity.cycles.empty() ?
+                             std::string() :
+                             model_adaptivity.cycles.back().stopped;
+        JsonValue cycles = JsonValue::array();
+        for (const ModelCycleRecord &cycle : model_adaptivity.cycles)
+          {
+            const ModelErrorRecord &e = levels[cycle.level_entry].model_error;
+            JsonValue               entry = JsonValue::object();
+            entry["cycle"]                = cycle.cycle;
+            entry["level_entry"]          = cycle.level_entry;
+            JsonValue boxes               = JsonValue::array();
+            for (const auto &box : cycle.boxes)
+              {
+                JsonValue numbers = JsonValue::array();
+                for (const double x : box)
+                  numbers.push_back(x);
+                boxes.push_back(numbers);
+              }
+            entry["boxes"]             = boxes;
+            entry["blocks"]            = cycle.blocks;
+            entry["particles"]         = cycle.particles;
+            entry["estimate"]          = cycle.estimate;
+            entry["estimate_absolute"] = cycle.estimate_absolute;
+            entry["estimate_coupling"] = cycle.estimate_coupling;
+            entry["true_error"] =
+              e.has_region_error ? JsonValue(e.region_relative) : JsonValue();
+            entry["effectivity"] = e.has_region_error ?
+                                     JsonValue(e.region_effectivity) :
+                                     JsonValue();
+            entry["true_error_whole_body_reference"] =
+              e.has_true_error ? JsonValue(e.true_relative) : JsonValue();
+            entry["marked"]  = cycle.marked;
+            entry["added"]   = cycle.added;
+            entry["stopped"] = cycle.stopped;
+            cycles.push_back(entry);
+          }
+        m["cycles"] = cycles;
       }
     return j;
   }

@@ -87,7 +87,25 @@ namespace ltn
         "they may touch (L- and T-shapes): no overlap band lies where they "
         "do. Not empty, it replaces the one box of `Nonlocal region "
         "lower/upper corner` (so a scene file's box can be changed from the "
-        "command line). 1D: one box.");
+        "command line). 1D: one box. `auto` (2D, 3D, a coupled elasticity "
+        "scene with cracks): LtN chooses the region, a union of blocks of "
+        "the coarse mesh, starting from each crack's box and adding, cycle "
+        "by cycle, the fewest blocks of largest model-error estimate that "
+        "could bring it below `Model error tolerance` "
+        "(doc/model_adaptivity.md).");
+      prm.declare_entry("Model error tolerance",
+                        "1e-4",
+                        Patterns::Double(),
+                        "With `Nonlocal regions = auto`: the modeling error "
+                        "to reach, relative to the energy norm of the "
+                        "solution; the loop stops when the estimate is "
+                        "below it. Positive.");
+      prm.declare_entry("Model adaptivity cycles",
+                        "6",
+                        Patterns::Integer(),
+                        "With `Nonlocal regions = auto`: the most regions the "
+                        "loop solves on (the first is the cracks' boxes). At "
+                        "least 1.");
       prm.declare_entry("Models",
                         "coupled",
                         Patterns::Selection("coupled|nonlocal only|local only"),
@@ -181,7 +199,34 @@ namespace ltn
                                              Models::coupled;
       const std::string     list = prm.get("Nonlocal regions");
       std::vector<Box<dim>> boxes;
-      if (Utilities::trim(list).empty())
+      automatic_region      = Utilities::trim(list) == "auto";
+      model_error_tolerance = prm.get_double("Model error tolerance");
+      check_input(model_error_tolerance > 0,
+                  "Geometry/Model error tolerance",
+                  prm.get("Model error tolerance"),
+                  "a positive number (relative to the solution's energy "
+                  "norm)");
+      const long cycles_given = prm.get_integer("Model adaptivity cycles");
+      check_input(cycles_given >= 1,
+                  "Geometry/Model adaptivity cycles",
+                  prm.get("Model adaptivity cycles"),
+                  "at least 1");
+      model_adaptivity_cycles = static_cast<unsigned int>(cycles_given);
+      if (automatic_region)
+        {
+          // The model-adaptivity loop sets the boxes (ModelAdaptivity).
+          given_as_list = true;
+          check_input(dim > 1,
+                      "Geometry/Nonlocal regions",
+                      list,
+                      "boxes; `auto` needs 2D or 3D");
+          check_input(models == Models::coupled,
+                      "Geometry/Models",
+                      choice,
+                      "coupled, with Geometry/Nonlocal regions = auto (a "
+                      "nonlocal region is chosen only for a coupled scene)");
+        }
+      else if (Utilities::trim(list).empty())
         {
           Box<dim> box;
           box.lower =
@@ -197,7 +242,8 @@ namespace ltn
         }
       if (models == Models::nonlocal_only)
         boxes = {body};
-      set_nonlocal_boxes(boxes);
+      if (!automatic_region)
+        set_nonlocal_boxes(boxes);
     }
     prm.leave_subsection();
   }

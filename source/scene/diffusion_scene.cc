@@ -83,10 +83,18 @@ namespace ltn
       std::unique_ptr<Local>
       make_local() const
       {
-        return std::make_unique<Local>(geometry,
-                                       local_parameters,
-                                       h,
-                                       communicator);
+        return make_local(geometry, local_parameters);
+      }
+
+      /**
+       * The level's local model on @p layout with @p parameters (kept alive
+       * by the caller).
+       */
+      std::unique_ptr<Local>
+      make_local(const Geometry<dim>        &layout,
+                 const LocalParameters<dim> &parameters) const
+      {
+        return std::make_unique<Local>(layout, parameters, h, communicator);
       }
 
       void
@@ -221,6 +229,11 @@ namespace ltn
     const double h0 = discretization.mesh_size(0);
     // The largest horizon of the study is on the coarsest level.
     const double eps0 = nonlocal_parameters.horizon(h0);
+    check_input(!geometry.automatic_region,
+                "Geometry/Nonlocal regions",
+                "auto",
+                "boxes in a diffusion scene: `auto` starts from the cracks "
+                "of an elasticity scene");
     geometry.validate(h0, eps0, eps0);
     local_parameters.validate(geometry);
 

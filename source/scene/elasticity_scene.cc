@@ -211,8 +211,19 @@ namespace ltn
       std::unique_ptr<Local>
       make_local() const
       {
-        return std::make_unique<Local>(geometry,
-                                       local_parameters,
+        return make_local(geometry, local_parameters);
+      }
+
+      /**
+       * The level's local model on @p layout with @p parameters (kept alive
+       * by the caller).
+       */
+      std::unique_ptr<Local>
+      make_local(const Geometry<dim>        &layout,
+                 const LocalParameters<dim> &parameters) const
+      {
+        return std::make_unique<Local>(layout,
+                                       parameters,
                                        material.lambda(dim),
                                        material.mu(),
                                        h,
@@ -401,9 +412,17 @@ namespace ltn
     // is just above a half-integer.
     const double spacing0 = nonlocal_parameters.particle_spacing(h0);
     const double radius   = std::floor(eps0 / spacing0 + 0.5);
-    geometry.validate(h0,
-                      std::max(2 * eps0, (2 * radius - 0.5) * spacing0),
-                      eps0);
+    const double range    = std::max(2 * eps0, (2 * radius - 0.5) * spacing0);
+    if (geometry.automatic_region)
+      {
+        // Each crack in the part of the start left to the nonlocal model
+        // alone, three horizons beyond its overlap band.
+        std::vector<Box<dim>> starts;
+        for (const Crack<dim> &crack : crack_set.cracks)
+          starts.push_back(crack.bounding_box());
+        this->start_model_adaptivity(starts, range, 3 * eps0);
+      }
+    geometry.validate(h0, range, eps0);
     local_parameters.validate(geometry);
     if (geometry.has_nonlocal_model())
       {
@@ -419,6 +438,20 @@ namespace ltn
                                                  MPI_COMM_WORLD);
       }
     section_planes = parse_section_planes<dim>(planes, geometry, h0);
+    if (this->model_adaptivity)
+      {
+        // A section plane may cross the overlap band, not the part of the
+        // region left to the nonlocal model alone: `auto` keeps away.
+        std::vector<Box<dim>> plane_boxes;
+        for (const auto &[axis, coordinate] : section_planes)
+          {
+            Box<dim> plane    = geometry.body;
+            plane.lower[axis] = coordinate;
+            plane.upper[axis] = coordinate;
+            plane_boxes.push_back(plane);
+          }
+        this->model_adaptivity->keep_away_from(plane_boxes);
+      }
     check_input(!local_parameters.dirichlet_faces.empty(),
                 "Local model/Dirichlet boundaries",
                 "",

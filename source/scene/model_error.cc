@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <ltn/base/direct_solver.h>
 #include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/nonlocal/particle_elasticity.h>
 #include <ltn/scene/model_error.h>
@@ -72,6 +73,140 @@ namespace ltn
       const DiscreteModel                      &model;
       std::map<types::global_dof_index, double> eliminated_diagonal;
     };
+
+    /**
+     * The vector over @p owned holding the sums of @p entries (global index,
+     * value), which this rank may hold for indices other ranks own.
+     * Collective.
+     */
+    TrilinosWrappers::MPI::Vector
+    sum_of_entries(
+      const IndexSet                                                &owned,
+      const std::vector<std::pair<types::global_dof_index, double>> &entries,
+      const MPI_Comm                                                 comm)
+    {
+      IndexSet written(owned.size());
+      for (const auto &entry : entries)
+        written.add_index(entry.first);
+      written.compress();
+      written.subtract_set(owned);
+      TrilinosWrappers::MPI::Vector sums;
+      sums.reinit(owned, written, comm, true);
+      for (const auto &[i, value] : entries)
+        sums(i) += value;
+      sums.compress(VectorOperation::add);
+      TrilinosWrappers::MPI::Vector result(owned, comm);
+      result = sums;
+      return result;
+    }
+
+
+
+    /**
+     * `eta_1` (doc/model_adaptivity.md, 'From residual to energy'): the
+     * load `F_k = sum_i V r_i . phi_k(x_i)` of the residual @p residual (on
+     * the lattice's particles, @p n_field components, `dof(n, c)` their
+     * numbers) on the finite elements of @p representer, zero in its fixed
+     * and constrained rows; `z` from `M z = F` (`M` has identity rows
+     * there, so `z` is zero on the Dirichlet faces); `eta_1^2 = F . z`, and
+     * the terms `V r_i . z(x_i)` into @p field.
+     */
+    template <int dim, typename Dof>
+    double
+    long_wave_estimate(const ParticleLattice<dim>          &lattice,
+                       const TrilinosWrappers::MPI::Vector &residual,
+                       const double                         volume,
+                       const DoFHandler<dim>               &dofs,
+                       const DiscreteModel                 &representer,
+                       const double                         tol,
+                       const Dof                           &dof,
+                       const unsigned int                   n_field,
+                       ModelErrorField<dim>                *field)
+    {
+      const MPI_Comm comm = representer.communicator;
+      AssertThrow(Utilities::MPI::sum(representer.constrained.n_elements(),
+                                      comm) == 0,
+                  ExcMessage("The error representer needs a mesh without "
+                             "hanging nodes."));
+      const auto &fe = dofs.get_fe();
+      // The residual at the particles in this rank's cells.
+      IndexSet needed(residual.size());
+      for_each_in_owned_cells(
+        lattice,
+        dofs,
+        tol,
+        [&](const auto &, const auto &, const auto n, const Point<dim> &) {
+          for (unsigned int c = 0; c < n_field; ++c)
+            needed.add_index(dof(n, c));
+        });
+      needed.compress();
+      needed.add_indices(residual.locally_owned_elements());
+      TrilinosWrappers::MPI::Vector r(residual.locally_owned_elements(),
+                                      needed,
+                                      comm);
+      r = residual;
+
+      // The field of the representer's shape functions at a particle.
+      std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+      const auto                           visit = [&](const auto &action) {
+        for_each_in_owned_cells(lattice,
+                                dofs,
+                                tol,
+                                [&](const auto       &cell,
+                                    const auto       &index,
+                                    const auto        n,
+                                    const Point<dim> &unit) {
+                                  cell->get_dof_indices(cell_dofs);
+                                  action(lattice.position(index), n, unit);
+                                });
+      };
+      std::vector<std::pair<types::global_dof_index, double>> loads;
+      visit([&](const Point<dim> &, const auto n, const Point<dim> &unit) {
+        for (unsigned int k = 0; k < cell_dofs.size(); ++k)
+          {
+            const unsigned int c     = fe.system_to_component_index(k).first;
+            const double       value = r(dof(n, c));
+            if (value != 0)
+              loads.emplace_back(cell_dofs[k],
+                                 volume * value *
+                                   fe.shape_value_component(k, unit, c));
+          }
+      });
+      TrilinosWrappers::MPI::Vector F = representer.new_vector();
+      F = sum_of_entries(representer.owned, loads, comm);
+      for (const auto i : representer.fixed)
+        F(i) = 0;
+      F.compress(VectorOperation::insert);
+
+      TrilinosWrappers::MPI::Vector z = representer.new_vector();
+      const DirectSolver            solver(representer.matrix,
+                                0.5,
+                                DirectSolver::Symmetry::general,
+                                DirectSolver::Ordering::nested_dissection);
+      solver.solve(z, F);
+      const double eta_1_squared = F * z;
+
+      if (field)
+        {
+          const TrilinosWrappers::MPI::Vector z_ghosted =
+            representer.ghosted(z);
+          visit([&](const Point<dim> &x, const auto n, const Point<dim> &unit) {
+            double term = 0;
+            for (unsigned int k = 0; k < cell_dofs.size(); ++k)
+              {
+                const unsigned int c = fe.system_to_component_index(k).first;
+                term += volume * r(dof(n, c)) * z_ghosted(cell_dofs[k]) *
+                        fe.shape_value_component(k, unit, c);
+              }
+            if (term != 0)
+              {
+                field->long_wave_points.push_back(x);
+                field->long_wave_terms.push_back(term);
+              }
+          });
+        }
+      return std::sqrt(std::max(eta_1_squared, 0.));
+    }
   } // namespace
 
 
@@ -87,6 +222,9 @@ namespace ltn
                        const double                         interaction_range,
                        const std::array<bool, 2 * dim>     &dirichlet_faces,
                        const TrilinosWrappers::MPI::Vector *reference_solution,
+                       const TrilinosWrappers::MPI::Vector *region_reference,
+                       const DoFHandler<dim>               *representer_dofs,
+                       const DiscreteModel                 *representer,
                        ModelErrorField<dim>                *field)
   {
     using LatticeIndex             = typename ParticleModel::LatticeIndex;
@@ -182,17 +320,7 @@ namespace ltn
                               for (unsigned int c = 0; c < n_field; ++c)
                                 local_values.emplace_back(dof(n, c), value[c]);
                             });
-    IndexSet written(model.owned.size());
-    for (const auto &entry : local_values)
-      written.add_index(entry.first);
-    written.compress();
-    written.subtract_set(model.owned);
-    TrilinosWrappers::MPI::Vector additions;
-    additions.reinit(model.owned, written, comm, true);
-    for (const auto &[i, value] : local_values)
-      additions(i) += value;
-    additions.compress(VectorOperation::add);
-    w += additions;
+    w += sum_of_entries(model.owned, local_values, comm);
 
     const FieldOperator operator_of_field(model);
     const auto          no_data       = model.new_vector();
@@ -286,6 +414,9 @@ namespace ltn
     types::global_dof_index n_points      = 0;
     TrilinosWrappers::MPI::Vector applied = model.new_vector();
     operator_of_field.apply(applied, w, model.rhs);
+    // The residual at the points of E (the long waves' load), zero
+    // elsewhere.
+    TrilinosWrappers::MPI::Vector residual_on_e = model.new_vector();
     // The scale: the energy of the composite field's free part, `V w_f^T
     // A_ff w_f` (the norm the error is measured in, of the field itself).
     auto free_part = w, free_applied = model.new_vector();
@@ -320,6 +451,8 @@ namespace ltn
           {
             const double r = model.rhs(dof(n, c)) - applied(dof(n, c));
             squared += r * r;
+            if (!near_face)
+              residual_on_e(dof(n, c)) = r;
           }
         const double contribution = volume * squared / chi / c_G;
         if (field)
@@ -341,32 +474,57 @@ namespace ltn
             largest_at = x;
           }
       }
-    record.estimate       = std::sqrt(Utilities::MPI::sum(sum, comm));
+    residual_on_e.compress(VectorOperation::insert);
+    record.estimate_short = std::sqrt(Utilities::MPI::sum(sum, comm));
+    if (representer)
+      record.estimate_long = long_wave_estimate(lattice,
+                                                residual_on_e,
+                                                volume,
+                                                *representer_dofs,
+                                                *representer,
+                                                tol,
+                                                dof,
+                                                n_field,
+                                                field);
+    record.estimate = std::hypot(record.estimate_short, record.estimate_long);
     record.boundary_layer = std::sqrt(Utilities::MPI::sum(boundary_sum, comm));
     const double scale =
       std::sqrt(std::max(Utilities::MPI::sum(energy, comm), 1e-300));
     record.relative = record.estimate / scale;
     record.n_points = Utilities::MPI::sum(n_points, comm);
+    record.norm     = scale;
+    // The energy of `reference - w` on the free field components, with the
+    // dilatation eliminated.
+    const auto error_norm = [&](const TrilinosWrappers::MPI::Vector &other) {
+      auto error = other, error_applied = model.new_vector();
+      for (const auto i : model.owned)
+        error(i) = is_free_field(i) ? error(i) - w(i) : 0.;
+      error.compress(VectorOperation::insert);
+      operator_of_field.apply(error_applied, error, no_data);
+      double error_energy = 0;
+      for (const auto i : model.owned)
+        if (is_free_field(i))
+          error_energy += volume * error(i) * error_applied(i);
+      return std::sqrt(std::max(Utilities::MPI::sum(error_energy, comm), 0.));
+    };
     if (reference_solution)
       {
-        // e = u_* - w on the free field components; the energy of e with
-        // the dilatation eliminated.
-        auto error = *reference_solution, error_applied = model.new_vector();
-        for (const auto i : model.owned)
-          error(i) = is_free_field(i) ? error(i) - w(i) : 0.;
-        error.compress(VectorOperation::insert);
-        operator_of_field.apply(error_applied, error, no_data);
-        double error_energy = 0;
-        for (const auto i : model.owned)
-          if (is_free_field(i))
-            error_energy += volume * error(i) * error_applied(i);
         record.has_true_error = true;
-        record.true_error =
-          std::sqrt(std::max(Utilities::MPI::sum(error_energy, comm), 0.));
-        record.true_relative = record.true_error / scale;
+        record.true_error     = error_norm(*reference_solution);
+        record.true_relative  = record.true_error / scale;
         record.effectivity =
           record.estimate / std::max(record.true_error, 1e-300);
       }
+    if (region_reference)
+      {
+        record.has_region_error = true;
+        record.region_error     = error_norm(*region_reference);
+        record.region_relative  = record.region_error / scale;
+        record.region_effectivity =
+          record.estimate / std::max(record.region_error, 1e-300);
+      }
+    if (field)
+      field->composite = w;
     // The largest contribution and its point, the same on every rank.
     const auto all_largest =
       Utilities::MPI::all_gather(comm, std::make_pair(largest, largest_at));
@@ -392,6 +550,9 @@ namespace ltn
     double,                                       \
     const std::array<bool, 2 * dim> &,            \
     const TrilinosWrappers::MPI::Vector *,        \
+    const TrilinosWrappers::MPI::Vector *,        \
+    const DoFHandler<dim> *,                      \
+    const DiscreteModel *,                        \
     ModelErrorField<dim> *);
   LTN_INSTANTIATE(2, ParticleDiffusion<2>)
   LTN_INSTANTIATE(3, ParticleDiffusion<3>)

@@ -32,8 +32,9 @@ namespace ltn
         "Estimate the modeling error of a coupled 2D or 3D level: the "
         "residual of the nonlocal model on the whole body at the composite "
         "field (u_n on the nonlocal region, u_l elsewhere), near the body "
-        "outside the nonlocal region; its short-wave part, a lower bound of "
-        "the error in energy against the nonlocal model on the whole body "
+        "outside the nonlocal region, measured in energy: its short waves "
+        "scaled by the operator's diagonal, its long waves through an error "
+        "representer in the local model's finite elements on the whole body "
         "(doc/model_adaptivity.md). Needs the particle spacing to divide the "
         "offset of the nonlocal region from the body's lower corner.");
       prm.declare_entry(
@@ -77,11 +78,14 @@ namespace ltn
     model_error_estimate = prm.get_bool("Model error estimate");
     true_model_error     = prm.get_bool("True model error");
     prm.leave_subsection();
+    // The loop of `auto` marks blocks by the estimate.
+    model_error_estimate = model_error_estimate || geometry.automatic_region;
     if (model_error_estimate || true_model_error)
       {
-        const std::string parameter = true_model_error ?
-                                        "Postprocess/True model error" :
-                                        "Postprocess/Model error estimate";
+        const std::string parameter =
+          geometry.automatic_region ? "Geometry/Nonlocal regions" :
+          true_model_error          ? "Postprocess/True model error" :
+                                      "Postprocess/Model error estimate";
         check_input(dim > 1 &&
                       geometry.models == Geometry<dim>::Models::coupled,
                     parameter,
@@ -89,9 +93,15 @@ namespace ltn
                     "a coupled scene in 2D or 3D (the estimate compares the "
                     "coupled solution with the nonlocal model on the whole "
                     "body)");
-        // The whole body's lattice must hold the coupled one's particles.
-        const Tensor<1, dim> offset =
-          geometry.nonlocal_region().bounding_box().lower - geometry.body.lower;
+        // The whole body's lattice must hold the coupled one's particles:
+        // `auto`'s regions are made of blocks of whole mesh sizes.
+        Tensor<1, dim> offset;
+        if (geometry.automatic_region)
+          for (unsigned int d = 0; d < dim; ++d)
+            offset[d] = discretization.mesh_size(0);
+        else
+          offset = geometry.nonlocal_region().bounding_box().lower -
+                   geometry.body.lower;
         for (unsigned int level = 0; level < discretization.n_levels; ++level)
           {
             const double spacing = nonlocal_parameters.particle_spacing(
@@ -105,6 +115,30 @@ namespace ltn
                             "nonlocal region from the body's lower corner (" +
                             to_string(offset[d]) + ")");
           }
+      }
+  }
+
+
+
+  template <int dim>
+  void
+  Scene<dim>::start_model_adaptivity(const std::vector<Box<dim>> &starts,
+                                     const double interaction_range,
+                                     const double margin)
+  {
+    if constexpr (dim > 1)
+      {
+        check_input(!starts.empty(),
+                    "Geometry/Nonlocal regions",
+                    "auto",
+                    "boxes, or `auto` in a scene with cracks (Cracks/Corners): "
+                    "the loop starts from each crack's box");
+        model_adaptivity.emplace(geometry,
+                                 discretization.mesh_size(0),
+                                 interaction_range,
+                                 starts,
+                                 margin);
+        geometry.set_nonlocal_boxes(model_adaptivity->region_boxes());
       }
   }
 

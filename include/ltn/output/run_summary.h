@@ -23,9 +23,16 @@ namespace ltn
   struct ModelErrorRecord
   {
     bool computed = false;
-    /** `eta_0 = (sum_E V |r_i|^2 / chi / c_G)^(1/2)`. */
-    double estimate = 0;
-    /** `eta_0` over the energy norm of the composite field. */
+    /**
+     * `eta = (eta_0^2 + eta_1^2)^(1/2)`: the short waves, `eta_0 =
+     * (sum_E V |r_i|^2 / chi / c_G)^(1/2)`, and the long ones, `eta_1 =
+     * a_l(z, z)^(1/2)` of the error representer `z` in the local model's
+     * finite elements on the whole body.
+     */
+    double estimate       = 0;
+    double estimate_short = 0;
+    double estimate_long  = 0;
+    /** `eta` over the energy norm of the composite field. */
     double relative = 0;
     /**
      * The same sum within the interaction range of the body's Dirichlet
@@ -33,6 +40,8 @@ namespace ltn
      * nonlocal region (a volume constraint against a boundary value).
      */
     double boundary_layer = 0;
+    /** The energy norm of the composite field, the scale of `relative`. */
+    double norm = 0;
     /** The diagonal of the nonlocal operator at an uncut interior point. */
     double chi = 0;
     /** The largest eigenvalue of the operator over its diagonal. */
@@ -48,6 +57,17 @@ namespace ltn
     double true_error     = 0;
     double true_relative  = 0;
     double effectivity    = 0;
+    /**
+     * With `Postprocess/True model error` and `Geometry/Nonlocal regions =
+     * auto`: the region's own modeling error, `||w - w_max||_{A_*}` against
+     * the composite field of the coupled solution on the largest admissible
+     * region (the same boundary strip and local model along the faces),
+     * relative as `relative` is, and `estimate / region_error`.
+     */
+    bool   has_region_error   = false;
+    double region_error       = 0;
+    double region_relative    = 0;
+    double region_effectivity = 0;
     /** The largest contribution of one point, and where it lies. */
     double              largest = 0;
     std::vector<double> largest_at;
@@ -89,6 +109,39 @@ namespace ltn
   };
 
   /**
+   * One cycle of `Geometry/Nonlocal regions = auto`: the region it solved
+   * on, its estimate, and what it decided.
+   */
+  struct ModelCycleRecord
+  {
+    unsigned int cycle = 0;
+    /** Its (last) solve's entry in RunSummary::levels. */
+    unsigned int level_entry = 0;
+    /** The boxes of the region, lower corner then upper corner each. */
+    std::vector<std::vector<double>> boxes;
+    unsigned int                     blocks    = 0;
+    types::global_dof_index          particles = 0;
+    /** The estimate relative to the composite field's energy norm. */
+    double estimate          = 0;
+    double estimate_absolute = 0;
+    /** The part of the estimate from blocks already in the region. */
+    double estimate_coupling = 0;
+    /** Blocks marked, and blocks added with the closure. */
+    unsigned int marked = 0, added = 0;
+    /** Why the loop stopped after this cycle; empty if it went on. */
+    std::string stopped;
+  };
+
+  /** The loop of `Geometry/Nonlocal regions = auto`, if the scene runs it. */
+  struct ModelAdaptivityRecord
+  {
+    bool                          enabled    = false;
+    double                        tolerance  = 0;
+    double                        block_size = 0;
+    std::vector<ModelCycleRecord> cycles;
+  };
+
+  /**
    * The run summary, written as `summary.json` (a public interface: see the
    * README for its keys). The top-level fields describe the finest level;
    * a run with several levels adds `convergence`, one entry per level with
@@ -100,6 +153,7 @@ namespace ltn
     unsigned int             dim = 1;
     std::string              model;
     std::vector<LevelRecord> levels;
+    ModelAdaptivityRecord    model_adaptivity;
     double                   total_time = 0;
     double                   memory_mb  = 0;
 

@@ -139,6 +139,14 @@ namespace ltn
     Models   models = Models::coupled;
     Box<dim> body;
     double   overlap_width = 0;
+    /**
+     * `Nonlocal regions = auto`: the model-adaptivity loop sets the boxes
+     * (set_nonlocal_boxes()), within `Model adaptivity cycles` regions, to
+     * `Model error tolerance`.
+     */
+    bool         automatic_region        = false;
+    double       model_error_tolerance   = 1e-4;
+    unsigned int model_adaptivity_cycles = 6;
 
   private:
     /**

@@ -4,6 +4,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <ltn/base/discrete_model.h>
 #include <ltn/output/run_summary.h>
 #include <ltn/problem/geometry.h>
 
@@ -17,14 +18,23 @@ namespace ltn
   /**
    * The estimate's terms point by point, this rank's, for the output: the
    * points of `E` and of the strip along Dirichlet faces, their terms `V
-   * |r_i|^2 / chi / c_G`, and 1 in the strip, 0 elsewhere.
+   * |r_i|^2 / chi / c_G`, and 1 in the strip, 0 elsewhere; the composite
+   * field itself on the whole body's lattice (the reference of another
+   * region's true error, ModelAdaptivity).
    */
   template <int dim>
   struct ModelErrorField
   {
-    std::vector<Point<dim>> points;
-    std::vector<double>     indicator;
-    std::vector<double>     boundary_layer;
+    std::vector<Point<dim>>       points;
+    std::vector<double>           indicator;
+    std::vector<double>           boundary_layer;
+    TrilinosWrappers::MPI::Vector composite;
+    /**
+     * The long-wave terms `V r_i . z(x_i)` at the points of `E` (this
+     * rank's cells of the representer's mesh): they sum to `eta_1^2`.
+     */
+    std::vector<Point<dim>> long_wave_points;
+    std::vector<double>     long_wave_terms;
   };
 
   /**
@@ -44,13 +54,22 @@ namespace ltn
    * largest eigenvalue of the operator over `chi`. Zero to round-off where
    * both models agree (polynomial fields the lattice operator reproduces).
    *
+   * With @p representer (the local model on the whole body, assembled, on a
+   * mesh without hanging nodes; @p representer_dofs its degrees of
+   * freedom) also the long waves: `z` in its finite elements, zero on its
+   * Dirichlet faces, with `a_l(z, v) = sum_E V r_i . v(x_i)` for all `v`,
+   * and `eta_1^2 = a_l(z, z)`; the estimate is `(eta_0^2 + eta_1^2)^(1/2)`.
+   *
    * @p reference is the nonlocal model of the same level on the whole body
    * (`Geometry/Models = nonlocal only`, same spacing and stencil, assembled
    * with its data); its lattice must be the coupled one's shifted by whole
    * spacings. @p local_field is ghosted. With @p reference_solution (the
    * reference's solution, `u_*`), also the true modeling error
-   * `||u_* - w||_{A_*}` and the effectivity `eta_0 / ||u_* - w||`. With
-   * @p field, the terms point by point. Collective.
+   * `||u_* - w||_{A_*}` and the effectivity `eta_0 / ||u_* - w||`; with
+   * @p region_reference (the composite field of the coupled solution on the
+   * largest admissible region, on the reference's lattice), the region's
+   * own error `||w_max - w||_{A_*}` and `eta_0` over it. With @p field, the
+   * terms point by point and the composite field. Collective.
    */
   template <int dim, typename ParticleModel>
   ModelErrorRecord
@@ -63,5 +82,8 @@ namespace ltn
                        const double                         interaction_range,
                        const std::array<bool, 2 * dim>     &dirichlet_faces,
                        const TrilinosWrappers::MPI::Vector *reference_solution,
+                       const TrilinosWrappers::MPI::Vector *region_reference,
+                       const DoFHandler<dim>               *representer_dofs,
+                       const DiscreteModel                 *representer,
                        ModelErrorField<dim>                *field);
 } // namespace ltn

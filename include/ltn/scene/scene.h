@@ -11,9 +11,11 @@
 #include <ltn/output/run_summary.h>
 #include <ltn/problem/discretization.h>
 #include <ltn/problem/geometry.h>
+#include <ltn/scene/model_adaptivity.h>
 #include <ltn/scene/model_error.h>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -106,6 +108,18 @@ namespace ltn
                ConditionalOStream   &out,
                const PhysicsOfLevel &physics_of_level);
 
+    /**
+     * For `Geometry/Nonlocal regions = auto`: the loop's blocks and its
+     * start from @p starts (a box per crack) grown by @p margin beyond the
+     * overlap, for a nonlocal model whose collar is @p interaction_range
+     * deep on the coarsest level; `Omega_n` becomes the start. Call after
+     * parse_parameters(), before the geometry is validated.
+     */
+    void
+    start_model_adaptivity(const std::vector<Box<dim>> &starts,
+                           const double                 interaction_range,
+                           const double                 margin);
+
     /** What the level of mesh size @p h reads of this scene. */
     SceneLevel<dim>
     level(const double h) const
@@ -129,6 +143,8 @@ namespace ltn
     /** `Postprocess/True model error`. */
     bool        true_model_error = false;
     std::string output_directory;
+    /** With `Geometry/Nonlocal regions = auto`. */
+    std::optional<ModelAdaptivity<dim>> model_adaptivity;
 
   private:
     std::vector<CouplingSolution> solutions;
@@ -165,32 +181,58 @@ namespace ltn
      *   `write_local(local, field, region, directory, name)`;
      * - `grouped_collection`: whether to write `scene.pvd` with both models;
      * - `dofs_label`: what the progress line calls the nonlocal unknowns.
+     *
+     * @p label names the solve in the progress ("level 0", "level 0, model
+     * cycle 2"); @p region_reference is passed to the model-error estimate.
+     * Returns the estimate's terms of the last adaptive cycle (empty without
+     * an estimate).
+     */
+    template <typename Physics>
+    ModelErrorField<dim>
+    run_level(const Physics                       &physics,
+              const std::string                   &label,
+              const std::string                   &output_directory,
+              RunSummary                          &summary,
+              WrittenFiles                        &files,
+              ConditionalOStream                  &out,
+              Progress                            &progress,
+              const TrilinosWrappers::MPI::Vector *region_reference = nullptr);
+
+    /**
+     * The first level under `Geometry/Nonlocal regions = auto`: a
+     * run_level() per model cycle, each on the region the previous one's
+     * estimate grew, until the estimate meets the tolerance (or the loop
+     * stops otherwise); the cycles into `summary.model_adaptivity`. With
+     * `Postprocess/True model error`, first the coupled solve on the
+     * largest admissible region, the reference of each cycle's true error.
      */
     template <typename Physics>
     void
-    run_level(const Physics      &physics,
-              const unsigned int  level,
-              const std::string  &output_directory,
-              RunSummary         &summary,
-              WrittenFiles       &files,
-              ConditionalOStream &out,
-              Progress           &progress);
+    run_model_cycles(const Physics      &physics,
+                     const std::string  &output_directory,
+                     RunSummary         &summary,
+                     WrittenFiles       &files,
+                     ConditionalOStream &out,
+                     Progress           &progress);
 
     /**
      * The model-error estimate of a coupled level (2D, 3D) whose models
      * @p nonlocal and @p local have the solution @p solution (@p local_field
      * its local part, ghosted): against the level's nonlocal model on the
      * whole body, built here, and solved with `Postprocess/True model
-     * error`. The terms point by point go to @p field.
+     * error`, and against @p region_reference if not null. The terms point
+     * by point go to @p field.
      */
     template <typename Physics>
     ModelErrorRecord
-    estimate_level_model_error(const Physics                       &physics,
-                               const typename Physics::Nonlocal    &nonlocal,
-                               const typename Physics::Local       &local,
-                               const CouplingSolution              &solution,
-                               const TrilinosWrappers::MPI::Vector &local_field,
-                               Progress                            &progress,
-                               ModelErrorField<dim> &field) const;
+    estimate_level_model_error(
+      const Physics                       &physics,
+      const typename Physics::Nonlocal    &nonlocal,
+      const typename Physics::Local       &local,
+      const CouplingSolution              &solution,
+      const TrilinosWrappers::MPI::Vector &local_field,
+      const TrilinosWrappers::MPI::Vector *region_reference,
+      Progress                            &progress,
+      ModelErrorField<dim>                &field) const;
   };
 } // namespace ltn

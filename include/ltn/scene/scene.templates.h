@@ -38,13 +38,21 @@ namespace ltn
     WrittenFiles files;
     Progress     progress(out);
     for (unsigned int level = 0; level < discretization.n_levels; ++level)
-      run_level(physics_of_level(discretization.mesh_size(level)),
-                level,
-                output_directory,
-                summary,
-                files,
-                out,
-                progress);
+      if (level == 0 && model_adaptivity)
+        run_model_cycles(physics_of_level(discretization.mesh_size(level)),
+                         output_directory,
+                         summary,
+                         files,
+                         out,
+                         progress);
+      else
+        run_level(physics_of_level(discretization.mesh_size(level)),
+                  "level " + std::to_string(level),
+                  output_directory,
+                  summary,
+                  files,
+                  out,
+                  progress);
     summary.total_time = total_timer.wall_time();
     return summary;
   }
@@ -54,13 +62,100 @@ namespace ltn
   template <int dim>
   template <typename Physics>
   void
-  Scene<dim>::run_level(const Physics      &physics,
-                        const unsigned int  level,
-                        const std::string  &output_directory,
-                        RunSummary         &summary,
-                        WrittenFiles       &files,
-                        ConditionalOStream &out,
-                        Progress           &progress)
+  Scene<dim>::run_model_cycles(const Physics      &physics,
+                               const std::string  &output_directory,
+                               RunSummary         &summary,
+                               WrittenFiles       &files,
+                               ConditionalOStream &out,
+                               Progress           &progress)
+  {
+    ModelAdaptivity<dim>  &loop   = *model_adaptivity;
+    ModelAdaptivityRecord &record = summary.model_adaptivity;
+    record.enabled                = true;
+    record.tolerance              = geometry.model_error_tolerance;
+    record.block_size             = loop.block_size();
+    ModelErrorField<dim> largest;
+    if (true_model_error)
+      {
+        // The reference: its own summary, files and solutions, none kept
+        // but its composite field.
+        geometry.set_nonlocal_boxes(loop.largest_boxes());
+        RunSummary        scratch;
+        WrittenFiles      none;
+        const std::size_t n_solutions = solutions.size();
+        largest                       = run_level(physics,
+                            "level 0, largest region (reference)",
+                            "",
+                            scratch,
+                            none,
+                            out,
+                            progress);
+        solutions.resize(n_solutions);
+      }
+    for (unsigned int cycle = 0;; ++cycle)
+      {
+        const std::vector<Box<dim>> boxes = loop.region_boxes();
+        geometry.set_nonlocal_boxes(boxes);
+        const ModelErrorField<dim> field =
+          run_level(physics,
+                    "level 0, model cycle " + std::to_string(cycle),
+                    output_directory,
+                    summary,
+                    files,
+                    out,
+                    progress,
+                    true_model_error ? &largest.composite : nullptr);
+        ModelCycleRecord entry;
+        entry.level_entry        = summary.levels.size() - 1;
+        const LevelRecord &level = summary.levels.back();
+        entry.particles          = level.n_particles;
+        for (const Box<dim> &box : boxes)
+          {
+            std::vector<double> corners;
+            for (const Point<dim> &corner : {box.lower, box.upper})
+              for (unsigned int d = 0; d < dim; ++d)
+                corners.push_back(corner[d]);
+            entry.boxes.push_back(corners);
+          }
+        const bool go_on =
+          loop.adapt(level.model_error,
+                     loop.block_indicators(field, MPI_COMM_WORLD),
+                     cycle,
+                     entry);
+        out << "model cycle " << cycle << ": " << entry.blocks << " blocks in "
+            << boxes.size() << (boxes.size() == 1 ? " box, " : " boxes, ")
+            << entry.particles << " particles, estimate " << std::scientific
+            << std::setprecision(2) << entry.estimate << " (tolerance "
+            << geometry.model_error_tolerance << ")";
+        if (level.model_error.has_region_error)
+          out << ", true " << level.model_error.region_relative
+              << ", effectivity " << std::defaultfloat << std::setprecision(3)
+              << level.model_error.region_effectivity;
+        out << std::defaultfloat;
+        if (go_on)
+          out << ", marked " << entry.marked << ", added " << entry.added
+              << std::endl;
+        else
+          out << "; stopped: " << entry.stopped << std::endl;
+        record.cycles.push_back(entry);
+        if (!go_on)
+          break;
+      }
+  }
+
+
+
+  template <int dim>
+  template <typename Physics>
+  ModelErrorField<dim>
+  Scene<dim>::run_level(const Physics                       &physics,
+                        const std::string                   &label,
+                        const std::string                   &output_directory,
+                        RunSummary                          &summary,
+                        WrittenFiles                        &files,
+                        ConditionalOStream                  &out,
+                        Progress                            &progress,
+                        const TrilinosWrappers::MPI::Vector *region_reference)
   {
     const double h = physics.h, eps = physics.eps;
     // The models of the scene: both, or one on the whole body. The local
@@ -71,14 +166,14 @@ namespace ltn
     SolverChoice                                choice;
     const unsigned int                          cycles =
       geometry.has_local_model() ? local_parameters.adaptive_cycles : 0;
+    ModelErrorField<dim> model_error_field;
     for (unsigned int cycle = 0; cycle <= cycles; ++cycle)
       {
         ConditionalOStream silent(out.get_stream(), false);
         TimerOutput timer(silent, TimerOutput::never, TimerOutput::wall_times);
         // Each phase of the level announced, once the run is long.
         const auto enter = [&](const std::string &phase) {
-          progress.report(
-            [&] { return "level " + std::to_string(level) + ": " + phase; });
+          progress.report([&] { return label + ": " + phase; });
           timer.enter_subsection(phase);
         };
         LevelRecord record;
@@ -122,8 +217,7 @@ namespace ltn
                              dim,
                              nonlocal && local);
             if (!choice.description.empty())
-              out << "level " << level << ": " << choice.description
-                  << std::endl;
+              out << label << ": " << choice.description << std::endl;
             if (!choice.note.empty())
               out << "note: " << choice.note << std::endl;
           }
@@ -188,7 +282,9 @@ namespace ltn
           nonlocal.get(), local.get(), solution, local_field, record);
         timer.leave_subsection();
 
-        ModelErrorField<dim> model_error_field;
+        model_error_field = ModelErrorField<dim>();
+        // Each point's block indicator, for the output of a model cycle.
+        std::vector<double> block_indicator;
         if constexpr (dim > 1)
           if (model_error_estimate || true_model_error)
             {
@@ -199,8 +295,18 @@ namespace ltn
                                            *local,
                                            solution,
                                            local_field,
+                                           region_reference,
                                            progress,
                                            model_error_field);
+              if (model_adaptivity)
+                {
+                  const std::vector<double> blocks =
+                    model_adaptivity->block_indicators(model_error_field,
+                                                       MPI_COMM_WORLD);
+                  for (const Point<dim> &p : model_error_field.points)
+                    block_indicator.push_back(
+                      blocks[model_adaptivity->block_of(p)]);
+                }
               timer.leave_subsection();
             }
 
@@ -243,10 +349,14 @@ namespace ltn
             if constexpr (dim > 1)
               if (record.model_error.computed)
                 {
-                  PointCloudOutput<dim> points(
-                    model_error_field.points,
-                    {{"model_error_indicator", model_error_field.indicator},
-                     {"boundary_layer", model_error_field.boundary_layer}});
+                  std::vector<std::pair<std::string, std::vector<double>>>
+                    fields{
+                      {"model_error_indicator", model_error_field.indicator},
+                      {"boundary_layer", model_error_field.boundary_layer}};
+                  if (model_adaptivity)
+                    fields.emplace_back("block_indicator", block_indicator);
+                  PointCloudOutput<dim> points(model_error_field.points,
+                                               fields);
                   files.model_error.emplace_back(
                     step,
                     write_parallel_vtu(points,
@@ -263,7 +373,7 @@ namespace ltn
           }
         record_timings(timer, record);
 
-        out << "level " << level
+        out << label
             << (cycle > 0 ? ", cycle " + std::to_string(cycle) : std::string())
             << ": h = " << h << ", eps = " << eps << ", " << physics.dofs_label
             << " = " << record.n_nonlocal_dofs
@@ -274,9 +384,10 @@ namespace ltn
             << record.mismatch_J << std::defaultfloat << std::endl
             << report;
         if (record.model_error.computed)
-          out << "  model error estimate (short waves, a lower bound): "
-              << std::scientific << std::setprecision(3)
-              << record.model_error.estimate << ", relative "
+          out << "  model error estimate: " << std::scientific
+              << std::setprecision(3) << record.model_error.estimate
+              << " (short waves " << record.model_error.estimate_short
+              << ", long " << record.model_error.estimate_long << "), relative "
               << record.model_error.relative;
         if (record.model_error.has_true_error)
           out << "; true error " << record.model_error.true_error
@@ -287,6 +398,7 @@ namespace ltn
           out << std::defaultfloat << std::endl;
         summary.levels.push_back(record);
       }
+    return model_error_field;
   }
 
 
@@ -300,6 +412,7 @@ namespace ltn
     const typename Physics::Local       &local,
     const CouplingSolution              &solution,
     const TrilinosWrappers::MPI::Vector &local_field,
+    const TrilinosWrappers::MPI::Vector *region_reference,
     Progress                            &progress,
     ModelErrorField<dim>                &field) const
   {
@@ -328,6 +441,14 @@ namespace ltn
                                          reference_record,
                                          progress);
       }
+    // The long waves' representer: the local model of the level on the
+    // whole body, on the level's uniform mesh (no hanging nodes).
+    Geometry<dim> local_body     = geometry;
+    local_body.models            = Geometry<dim>::Models::local_only;
+    LocalParameters<dim> uniform = local_parameters;
+    uniform.graded_mesh_layers   = 0;
+    const auto representer       = physics.make_local(local_body, uniform);
+    physics.assemble(*representer);
     std::array<bool, 2 * dim> dirichlet;
     for (unsigned int f = 0; f < 2 * dim; ++f)
       dirichlet[f] = physics.fully_dirichlet(f);
@@ -342,6 +463,9 @@ namespace ltn
                                 true_model_error ?
                                   &reference_solution.fields[nonlocal_model] :
                                   nullptr,
+                                region_reference,
+                                &representer->get_dof_handler(),
+                                &representer->get_model(),
                                 &field);
   }
 } // namespace ltn
