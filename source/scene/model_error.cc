@@ -1,7 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <ltn/base/direct_solver.h>
 #include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/nonlocal/particle_elasticity.h>
 #include <ltn/scene/model_error.h>
@@ -121,6 +120,7 @@ namespace ltn
                        const double                         tol,
                        const Dof                           &dof,
                        const unsigned int                   n_field,
+                       ModelErrorOperators                 &operators,
                        ModelErrorField<dim>                *field)
     {
       const MPI_Comm comm = representer.communicator;
@@ -179,11 +179,13 @@ namespace ltn
       F.compress(VectorOperation::insert);
 
       TrilinosWrappers::MPI::Vector z = representer.new_vector();
-      const DirectSolver            solver(representer.matrix,
-                                0.5,
-                                DirectSolver::Symmetry::general,
-                                DirectSolver::Ordering::nested_dissection);
-      solver.solve(z, F);
+      if (!operators.representer_solver)
+        operators.representer_solver = std::make_shared<const DirectSolver>(
+          representer.matrix,
+          0.5,
+          DirectSolver::Symmetry::general,
+          DirectSolver::Ordering::nested_dissection);
+      operators.representer_solver->solve(z, F);
       const double eta_1_squared = F * z;
 
       if (field)
@@ -225,6 +227,7 @@ namespace ltn
                        const TrilinosWrappers::MPI::Vector *region_reference,
                        const DoFHandler<dim>               *representer_dofs,
                        const DiscreteModel                 *representer,
+                       ModelErrorOperators                 &operators,
                        ModelErrorField<dim>                *field)
   {
     using LatticeIndex             = typename ParticleModel::LatticeIndex;
@@ -328,76 +331,82 @@ namespace ltn
       return i % n_comp < n_field && model.role(i) == DofRole::free;
     };
 
-    // chi: probes one particle in every K^dim block of the lattice, K
-    // beyond twice the stencil's reach, so that each probe's row sees
-    // only itself; the value most probes share is that of the uncut
-    // interior (rows next to cracks and the body's faces differ).
-    const unsigned int reach =
-      static_cast<unsigned int>(std::ceil(2 * interaction_range / spacing));
-    const int block = 2 * reach + 1;
-    auto      probe = model.new_vector(), probed = model.new_vector();
-    for (const auto i : model.owned)
-      if (i % n_comp == 0 && is_free_field(i))
-        {
-          const LatticeIndex index = lattice.index(i / n_comp);
-          bool               on    = true;
-          for (unsigned int d = 0; d < dim; ++d)
-            on = on && ((index[d] % block) + block) % block == 0;
-          if (on)
-            probe(i) = 1;
-        }
-    probe.compress(VectorOperation::insert);
-    operator_of_field.apply(probed, probe, no_data);
-    std::vector<double> diagonals;
-    for (const auto i : model.owned)
-      if (probe(i) == 1)
-        diagonals.push_back(probed(i));
-    std::vector<double> all;
-    for (const auto &part : Utilities::MPI::all_gather(comm, diagonals))
-      all.insert(all.end(), part.begin(), part.end());
-    std::sort(all.begin(), all.end());
-    AssertThrow(!all.empty(), ExcInternalError());
-    double       chi  = all.front();
-    unsigned int most = 0;
-    for (std::size_t k = 0; k < all.size();)
+    // chi and c_G, unless known.
+    if (operators.chi == 0)
       {
-        std::size_t end = k;
-        while (end < all.size() &&
-               all[end] - all[k] <= 1e-10 * std::abs(all[k]))
-          ++end;
-        if (end - k > most)
+        // chi: probes one particle in every K^dim block of the lattice, K
+        // beyond twice the stencil's reach, so that each probe's row sees
+        // only itself; the value most probes share is that of the uncut
+        // interior (rows next to cracks and the body's faces differ).
+        const unsigned int reach =
+          static_cast<unsigned int>(std::ceil(2 * interaction_range / spacing));
+        const int block = 2 * reach + 1;
+        auto      probe = model.new_vector(), probed = model.new_vector();
+        for (const auto i : model.owned)
+          if (i % n_comp == 0 && is_free_field(i))
+            {
+              const LatticeIndex index = lattice.index(i / n_comp);
+              bool               on    = true;
+              for (unsigned int d = 0; d < dim; ++d)
+                on = on && ((index[d] % block) + block) % block == 0;
+              if (on)
+                probe(i) = 1;
+            }
+        probe.compress(VectorOperation::insert);
+        operator_of_field.apply(probed, probe, no_data);
+        std::vector<double> diagonals;
+        for (const auto i : model.owned)
+          if (probe(i) == 1)
+            diagonals.push_back(probed(i));
+        std::vector<double> all;
+        for (const auto &part : Utilities::MPI::all_gather(comm, diagonals))
+          all.insert(all.end(), part.begin(), part.end());
+        std::sort(all.begin(), all.end());
+        AssertThrow(!all.empty(), ExcInternalError());
+        double       chi  = all.front();
+        unsigned int most = 0;
+        for (std::size_t k = 0; k < all.size();)
           {
-            most = end - k;
-            chi  = all[k];
+            std::size_t end = k;
+            while (end < all.size() &&
+                   all[end] - all[k] <= 1e-10 * std::abs(all[k]))
+              ++end;
+            if (end - k > most)
+              {
+                most = end - k;
+                chi  = all[k];
+              }
+            k = end;
           }
-        k = end;
-      }
 
 
-    // c_G: the largest eigenvalue of the operator on the free field
-    // components over chi, by the power method.
-    std::mt19937                           random(17);
-    std::uniform_real_distribution<double> uniform(-1, 1);
-    auto                                   v      = model.new_vector();
-    double                                 lambda = 0;
-    for (unsigned int iteration = 0; iteration < 40; ++iteration)
-      {
-        if (iteration == 0)
-          for (const auto i : model.owned)
-            v(i) = is_free_field(i) ? uniform(random) : 0.;
-        v.compress(VectorOperation::insert);
-        v /= v.l2_norm();
-        auto y = model.new_vector();
-        operator_of_field.apply(y, v, no_data);
-        double vy = 0;
-        for (const auto i : model.owned)
-          if (is_free_field(i))
-            vy += v(i) * y(i);
-        lambda = Utilities::MPI::sum(vy, comm);
-        for (const auto i : model.owned)
-          v(i) = is_free_field(i) ? y(i) : 0.;
+        // c_G: the largest eigenvalue of the operator on the free field
+        // components over chi, by the power method.
+        std::mt19937                           random(17);
+        std::uniform_real_distribution<double> uniform(-1, 1);
+        auto                                   v      = model.new_vector();
+        double                                 lambda = 0;
+        for (unsigned int iteration = 0; iteration < 40; ++iteration)
+          {
+            if (iteration == 0)
+              for (const auto i : model.owned)
+                v(i) = is_free_field(i) ? uniform(random) : 0.;
+            v.compress(VectorOperation::insert);
+            v /= v.l2_norm();
+            auto y = model.new_vector();
+            operator_of_field.apply(y, v, no_data);
+            double vy = 0;
+            for (const auto i : model.owned)
+              if (is_free_field(i))
+                vy += v(i) * y(i);
+            lambda = Utilities::MPI::sum(vy, comm);
+            for (const auto i : model.owned)
+              v(i) = is_free_field(i) ? y(i) : 0.;
+          }
+        operators.c_G = lambda / chi;
+        operators.chi = chi;
       }
-    const double c_G = lambda / chi;
+    const double chi = operators.chi, c_G = operators.c_G;
 
     // The estimate over E: the free points within the interaction range of
     // the body outside Omega_n whose reach stays inside the body. Within
@@ -485,6 +494,7 @@ namespace ltn
                                                 tol,
                                                 dof,
                                                 n_field,
+                                                operators,
                                                 field);
     record.estimate = std::hypot(record.estimate_short, record.estimate_long);
     record.boundary_layer = std::sqrt(Utilities::MPI::sum(boundary_sum, comm));
@@ -553,6 +563,7 @@ namespace ltn
     const TrilinosWrappers::MPI::Vector *,        \
     const DoFHandler<dim> *,                      \
     const DiscreteModel *,                        \
+    ModelErrorOperators &,                        \
     ModelErrorField<dim> *);
   LTN_INSTANTIATE(2, ParticleDiffusion<2>)
   LTN_INSTANTIATE(3, ParticleDiffusion<3>)

@@ -4,11 +4,13 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <ltn/base/direct_solver.h>
 #include <ltn/base/discrete_model.h>
 #include <ltn/output/run_summary.h>
 #include <ltn/problem/geometry.h>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace ltn
@@ -38,6 +40,23 @@ namespace ltn
   };
 
   /**
+   * What the estimate computes of the whole body's operators, the same for
+   * every region at one spacing: kept by a caller that estimates several
+   * regions (the model-adaptivity loop). Empty, the estimate fills it.
+   */
+  struct ModelErrorOperators
+  {
+    /** The diagonal at an uncut interior point; 0 until computed. */
+    double chi = 0;
+    /** The largest eigenvalue over `chi`. */
+    double c_G = 0;
+    /** The representer's factorization. */
+    std::shared_ptr<const DirectSolver> representer_solver;
+  };
+
+
+
+  /**
    * The short-wave model-error estimate of a coupled solution
    * (doc/model_adaptivity.md, 'The model-error indicator'): the residual of
    * the nonlocal model on the whole body, `r = b - A w`, of the composite
@@ -59,6 +78,7 @@ namespace ltn
    * freedom) also the long waves: `z` in its finite elements, zero on its
    * Dirichlet faces, with `a_l(z, v) = sum_E V r_i . v(x_i)` for all `v`,
    * and `eta_1^2 = a_l(z, z)`; the estimate is `(eta_0^2 + eta_1^2)^(1/2)`.
+   * What @p operators holds is used, what it lacks computed into it.
    *
    * @p reference is the nonlocal model of the same level on the whole body
    * (`Geometry/Models = nonlocal only`, same spacing and stencil, assembled
@@ -85,5 +105,6 @@ namespace ltn
                        const TrilinosWrappers::MPI::Vector *region_reference,
                        const DoFHandler<dim>               *representer_dofs,
                        const DiscreteModel                 *representer,
+                       ModelErrorOperators                 &operators,
                        ModelErrorField<dim>                *field);
 } // namespace ltn

@@ -150,6 +150,24 @@ namespace ltn
     std::vector<CouplingSolution> solutions;
 
     /**
+     * What the model-error estimate of a level builds whatever the region
+     * (built by the level's first estimate, kept by the model-adaptivity
+     * loop for all its cycles): the nonlocal model on the whole body, with
+     * its solution for the true error, the local model on the whole body
+     * (the long waves' representer), and ModelErrorOperators.
+     */
+    template <typename Physics>
+    struct LevelReference
+    {
+      /** The layouts of the two models (which may keep references). */
+      Geometry<dim>                               whole_body, local_body;
+      std::unique_ptr<typename Physics::Nonlocal> nonlocal;
+      std::unique_ptr<typename Physics::Local>    representer;
+      CouplingSolution                            solution;
+      ModelErrorOperators                         operators;
+    };
+
+    /**
      * The VTU records written so far, per model: (step, file), for the
      * `.pvd` collections.
      */
@@ -183,9 +201,10 @@ namespace ltn
      * - `dofs_label`: what the progress line calls the nonlocal unknowns.
      *
      * @p label names the solve in the progress ("level 0", "level 0, model
-     * cycle 2"); @p region_reference is passed to the model-error estimate.
-     * Returns the estimate's terms of the last adaptive cycle (empty without
-     * an estimate).
+     * cycle 2"); @p region_reference is passed to the model-error estimate,
+     * which builds its reference into @p reference if given (to be kept
+     * for the next region), else its own. Returns the estimate's terms of
+     * the last adaptive cycle (empty without an estimate).
      */
     template <typename Physics>
     ModelErrorField<dim>
@@ -196,7 +215,8 @@ namespace ltn
               WrittenFiles                        &files,
               ConditionalOStream                  &out,
               Progress                            &progress,
-              const TrilinosWrappers::MPI::Vector *region_reference = nullptr);
+              const TrilinosWrappers::MPI::Vector *region_reference = nullptr,
+              LevelReference<Physics>             *reference        = nullptr);
 
     /**
      * The first level under `Geometry/Nonlocal regions = auto`: a
@@ -219,8 +239,9 @@ namespace ltn
      * The model-error estimate of a coupled level (2D, 3D) whose models
      * @p nonlocal and @p local have the solution @p solution (@p local_field
      * its local part, ghosted): against the level's nonlocal model on the
-     * whole body, built here, and solved with `Postprocess/True model
-     * error`, and against @p region_reference if not null. The terms point
+     * whole body, built into @p reference unless there, and solved with
+     * `Postprocess/True model error`, and against @p region_reference if not
+     * null. The terms point
      * by point go to @p field.
      */
     template <typename Physics>
@@ -232,6 +253,7 @@ namespace ltn
       const CouplingSolution              &solution,
       const TrilinosWrappers::MPI::Vector &local_field,
       const TrilinosWrappers::MPI::Vector *region_reference,
+      LevelReference<Physics>             &reference,
       Progress                            &progress,
       ModelErrorField<dim>                &field) const;
   };

@@ -74,7 +74,9 @@ namespace ltn
     record.enabled                = true;
     record.tolerance              = geometry.model_error_tolerance;
     record.block_size             = loop.block_size();
-    ModelErrorField<dim> largest;
+    // One estimate's reference for every region of the level.
+    LevelReference<Physics> reference;
+    ModelErrorField<dim>    largest;
     if (true_model_error)
       {
         // The reference: its own summary, files and solutions, none kept
@@ -89,7 +91,9 @@ namespace ltn
                             scratch,
                             none,
                             out,
-                            progress);
+                            progress,
+                            nullptr,
+                            &reference);
         solutions.resize(n_solutions);
       }
     for (unsigned int cycle = 0;; ++cycle)
@@ -104,7 +108,8 @@ namespace ltn
                     files,
                     out,
                     progress,
-                    true_model_error ? &largest.composite : nullptr);
+                    true_model_error ? &largest.composite : nullptr,
+                    &reference);
         ModelCycleRecord entry;
         entry.level_entry        = summary.levels.size() - 1;
         const LevelRecord &level = summary.levels.back();
@@ -155,7 +160,8 @@ namespace ltn
                         WrittenFiles                        &files,
                         ConditionalOStream                  &out,
                         Progress                            &progress,
-                        const TrilinosWrappers::MPI::Vector *region_reference)
+                        const TrilinosWrappers::MPI::Vector *region_reference,
+                        LevelReference<Physics>             *reference)
   {
     const double h = physics.h, eps = physics.eps;
     // The models of the scene: both, or one on the whole body. The local
@@ -167,6 +173,10 @@ namespace ltn
     const unsigned int                          cycles =
       geometry.has_local_model() ? local_parameters.adaptive_cycles : 0;
     ModelErrorField<dim> model_error_field;
+    // The estimate's reference: the caller's, or the level's own.
+    LevelReference<Physics>  own_reference;
+    LevelReference<Physics> &level_reference =
+      reference ? *reference : own_reference;
     for (unsigned int cycle = 0; cycle <= cycles; ++cycle)
       {
         ConditionalOStream silent(out.get_stream(), false);
@@ -296,6 +306,7 @@ namespace ltn
                                            solution,
                                            local_field,
                                            region_reference,
+                                           level_reference,
                                            progress,
                                            model_error_field);
               if (model_adaptivity)
@@ -413,42 +424,47 @@ namespace ltn
     const CouplingSolution              &solution,
     const TrilinosWrappers::MPI::Vector &local_field,
     const TrilinosWrappers::MPI::Vector *region_reference,
+    LevelReference<Physics>             &reference,
     Progress                            &progress,
     ModelErrorField<dim>                &field) const
   {
-    // The nonlocal model of the level on the whole body: the reference
-    // whose residual at the composite field is the estimate's, solved for
-    // the true error.
-    Geometry<dim> whole_body = geometry;
-    whole_body.models        = Geometry<dim>::Models::nonlocal_only;
-    whole_body.set_nonlocal_boxes({geometry.body});
-    const auto         reference = physics.make_nonlocal(whole_body);
-    const SolverChoice choice =
-      choose_solvers(physics.coupling(),
-                     nonlocal_parameters.operator_storage,
-                     reference->get_model().owned.size(),
-                     dim,
-                     false);
-    physics.assemble(*reference, !true_model_error || choice.matrix_free);
-    CouplingSolution reference_solution;
-    if (true_model_error)
+    if (!reference.nonlocal)
       {
-        LevelRecord reference_record;
-        reference_solution = solve_level(&reference->get_model(),
-                                         nullptr,
-                                         OverlapQuadrature<dim>(),
-                                         choice.coupling,
-                                         reference_record,
-                                         progress);
+        // The nonlocal model of the level on the whole body: the reference
+        // whose residual at the composite field is the estimate's, solved
+        // for the true error.
+        reference.whole_body        = geometry;
+        reference.whole_body.models = Geometry<dim>::Models::nonlocal_only;
+        reference.whole_body.set_nonlocal_boxes({geometry.body});
+        reference.nonlocal = physics.make_nonlocal(reference.whole_body);
+        const SolverChoice choice =
+          choose_solvers(physics.coupling(),
+                         nonlocal_parameters.operator_storage,
+                         reference.nonlocal->get_model().owned.size(),
+                         dim,
+                         false);
+        physics.assemble(*reference.nonlocal,
+                         !true_model_error || choice.matrix_free);
+        if (true_model_error)
+          {
+            LevelRecord reference_record;
+            reference.solution = solve_level(&reference.nonlocal->get_model(),
+                                             nullptr,
+                                             OverlapQuadrature<dim>(),
+                                             choice.coupling,
+                                             reference_record,
+                                             progress);
+          }
+        // The long waves' representer: the local model of the level on the
+        // whole body, on the level's uniform mesh (no hanging nodes).
+        reference.local_body         = geometry;
+        reference.local_body.models  = Geometry<dim>::Models::local_only;
+        LocalParameters<dim> uniform = local_parameters;
+        uniform.graded_mesh_layers   = 0;
+        reference.representer =
+          physics.make_local(reference.local_body, uniform);
+        physics.assemble(*reference.representer);
       }
-    // The long waves' representer: the local model of the level on the
-    // whole body, on the level's uniform mesh (no hanging nodes).
-    Geometry<dim> local_body     = geometry;
-    local_body.models            = Geometry<dim>::Models::local_only;
-    LocalParameters<dim> uniform = local_parameters;
-    uniform.graded_mesh_layers   = 0;
-    const auto representer       = physics.make_local(local_body, uniform);
-    physics.assemble(*representer);
     std::array<bool, 2 * dim> dirichlet;
     for (unsigned int f = 0; f < 2 * dim; ++f)
       dirichlet[f] = physics.fully_dirichlet(f);
@@ -457,15 +473,16 @@ namespace ltn
                                 solution.fields[nonlocal_model],
                                 local.get_dof_handler(),
                                 local_field,
-                                *reference,
+                                *reference.nonlocal,
                                 physics.collar_depth,
                                 dirichlet,
                                 true_model_error ?
-                                  &reference_solution.fields[nonlocal_model] :
+                                  &reference.solution.fields[nonlocal_model] :
                                   nullptr,
                                 region_reference,
-                                &representer->get_dof_handler(),
-                                &representer->get_model(),
+                                &reference.representer->get_dof_handler(),
+                                &reference.representer->get_model(),
+                                reference.operators,
                                 &field);
   }
 } // namespace ltn
