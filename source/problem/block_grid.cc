@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 
 namespace ltn
 {
@@ -146,6 +147,47 @@ namespace ltn
           neighbours.push_back(number(n));
         }
     return neighbours;
+  }
+
+
+
+  template <int dim>
+  typename BlockGrid<dim>::Set
+  BlockGrid<dim>::window(const unsigned int k,
+                         const unsigned int radius,
+                         const Set         &within) const
+  {
+    // The index box of `within`.
+    std::array<int, dim> low, high;
+    low.fill(std::numeric_limits<int>::max());
+    high.fill(-1);
+    for (unsigned int b = 0; b < n_blocks(); ++b)
+      if (within[b])
+        {
+          const auto c = coordinates(b);
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              low[d]  = std::min(low[d], static_cast<int>(c[d]));
+              high[d] = std::max(high[d], static_cast<int>(c[d]));
+            }
+        }
+    const auto           centre = coordinates(k);
+    std::array<int, dim> first;
+    for (unsigned int d = 0; d < dim; ++d)
+      first[d] = std::max(low[d],
+                          std::min(static_cast<int>(centre[d]) - int(radius),
+                                   high[d] - 2 * int(radius)));
+    Set set(n_blocks(), false);
+    for (unsigned int b = 0; b < n_blocks(); ++b)
+      {
+        const auto c  = coordinates(b);
+        bool       in = within[b];
+        for (unsigned int d = 0; d < dim; ++d)
+          in = in && int(c[d]) >= first[d] &&
+               int(c[d]) <= first[d] + 2 * int(radius);
+        set[b] = in;
+      }
+    return set;
   }
 
 

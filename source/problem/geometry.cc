@@ -87,12 +87,12 @@ namespace ltn
         "they may touch (L- and T-shapes): no overlap band lies where they "
         "do. Not empty, it replaces the one box of `Nonlocal region "
         "lower/upper corner` (so a scene file's box can be changed from the "
-        "command line). 1D: one box. `auto` (2D, 3D, a coupled elasticity "
-        "scene with cracks): LtN chooses the region, a union of blocks of "
-        "the coarse mesh, starting from each crack's box and adding, cycle "
-        "by cycle, the fewest blocks of largest model-error estimate that "
-        "could bring it below `Model error tolerance` "
-        "(doc/model_adaptivity.md).");
+        "command line). 1D: one box. `auto` (2D, 3D, a coupled scene): LtN "
+        "chooses the region, a union of blocks of the coarse mesh, starting "
+        "from each crack's box (without cracks: from the local model alone, "
+        "then the blocks around the largest estimate) and adding, cycle by "
+        "cycle, the fewest blocks of largest model-error estimate that could "
+        "bring it below `Model error tolerance` (doc/model_adaptivity.md).");
       prm.declare_entry("Model error tolerance",
                         "1e-4",
                         Patterns::Double(),

@@ -80,12 +80,6 @@ namespace ltn
             communicator);
       }
 
-      std::unique_ptr<Local>
-      make_local() const
-      {
-        return make_local(geometry, local_parameters);
-      }
-
       /**
        * The level's local model on @p layout with @p parameters (kept alive
        * by the caller).
@@ -229,11 +223,9 @@ namespace ltn
     const double h0 = discretization.mesh_size(0);
     // The largest horizon of the study is on the coarsest level.
     const double eps0 = nonlocal_parameters.horizon(h0);
-    check_input(!geometry.automatic_region,
-                "Geometry/Nonlocal regions",
-                "auto",
-                "boxes in a diffusion scene: `auto` starts from the cracks "
-                "of an elasticity scene");
+    if (geometry.automatic_region)
+      // No cracks: the loop starts from the local model alone.
+      this->start_model_adaptivity({}, eps0, 3 * eps0);
     geometry.validate(h0, eps0, eps0);
     local_parameters.validate(geometry);
 

@@ -208,12 +208,6 @@ namespace ltn
                                           MPI_COMM_WORLD);
       }
 
-      std::unique_ptr<Local>
-      make_local() const
-      {
-        return make_local(geometry, local_parameters);
-      }
-
       /**
        * The level's local model on @p layout with @p parameters (kept alive
        * by the caller).

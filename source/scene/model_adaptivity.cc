@@ -158,6 +158,26 @@ namespace ltn
         return false;
       }
 
+    if (BlockGrid<dim>::count(region) == 0)
+      {
+        // No crack to start from: the blocks around the one of largest
+        // indicator, three wide (a piece with part of S), within U_max.
+        unsigned int top = grid.n_blocks();
+        for (unsigned int k = 0; k < grid.n_blocks(); ++k)
+          if (largest[k] && (top == grid.n_blocks() ||
+                             indicators[k] > indicators[top] * (1 + margin)))
+            top = k;
+        if (top == grid.n_blocks())
+          {
+            cycle.stopped = "nothing to mark";
+            return false;
+          }
+        const auto seed = grid.window(top, 1, largest);
+        cycle.marked    = BlockGrid<dim>::count(seed);
+        cycle.added     = grow(seed);
+        return true;
+      }
+
     // Candidates: the blocks of U_max sharing a face with U (the region
     // grows from its faces, a layer of blocks per cycle at most), largest
     // indicator first (ties by number).

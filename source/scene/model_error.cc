@@ -216,7 +216,7 @@ namespace ltn
   template <int dim, typename ParticleModel>
   ModelErrorRecord
   estimate_model_error(const Geometry<dim>                 &geometry,
-                       const ParticleModel                 &coupled,
+                       const ParticleModel                 *coupled,
                        const TrilinosWrappers::MPI::Vector &nonlocal_field,
                        const DoFHandler<dim>               &local_dofs,
                        const TrilinosWrappers::MPI::Vector &local_field,
@@ -243,22 +243,30 @@ namespace ltn
       return ParticleModel::dof(n, c);
     };
 
+    // Without a coupled nonlocal model the region is empty.
+    const auto in_region = [&](const Point<dim> &x) {
+      return coupled && region.contains_strictly(x, tol);
+    };
     // The coupled lattice is the reference's shifted by whole spacings.
     LatticeIndex zero{}, one{};
     one[0]               = 1;
     const double spacing = lattice.position(one)[0] - lattice.position(zero)[0];
-    LatticeIndex shift;
-    for (unsigned int d = 0; d < dim; ++d)
-      shift[d] = static_cast<int>(std::round(
-        (lattice.position(zero)[d] - coupled.get_lattice().position(zero)[d]) /
-        spacing));
+    LatticeIndex shift{};
+    if (coupled)
+      for (unsigned int d = 0; d < dim; ++d)
+        shift[d] = static_cast<int>(
+          std::round((lattice.position(zero)[d] -
+                      coupled->get_lattice().position(zero)[d]) /
+                     spacing));
 
     // The composite field: the volume constraint beyond the body, u_n on
     // Omega_n (read through ghosts), u_l elsewhere (below).
     TrilinosWrappers::MPI::Vector w = model.new_vector();
     std::vector<std::pair<types::global_dof_index, types::global_dof_index>>
-             from_coupled;
-    IndexSet needed(coupled.get_model().owned.size());
+                   from_coupled;
+    const IndexSet coupled_owned =
+      coupled ? coupled->get_model().owned : IndexSet(0);
+    IndexSet needed(coupled_owned.size());
     for (const auto i : model.owned)
       {
         if (i % n_comp != 0)
@@ -269,12 +277,12 @@ namespace ltn
         if (reference.role(index) == DofRole::fixed)
           for (unsigned int c = 0; c < n_field; ++c)
             w(dof(n, c)) = model.rhs(dof(n, c));
-        else if (region.contains_strictly(x, tol))
+        else if (in_region(x))
           {
             LatticeIndex at = index;
             for (unsigned int d = 0; d < dim; ++d)
               at[d] += shift[d];
-            const auto m = coupled.get_lattice().number(at);
+            const auto m = coupled->get_lattice().number(at);
             AssertThrow(m != ParticleLattice<dim>::invalid, ExcInternalError());
             for (unsigned int c = 0; c < n_field; ++c)
               {
@@ -283,14 +291,17 @@ namespace ltn
               }
           }
       }
-    needed.compress();
-    needed.add_indices(coupled.get_model().owned);
-    TrilinosWrappers::MPI::Vector coupled_values(coupled.get_model().owned,
-                                                 needed,
-                                                 comm);
-    coupled_values = nonlocal_field;
-    for (const auto &[i, j] : from_coupled)
-      w(i) = coupled_values(j);
+    if (coupled)
+      {
+        needed.compress();
+        needed.add_indices(coupled_owned);
+        TrilinosWrappers::MPI::Vector coupled_values(coupled_owned,
+                                                     needed,
+                                                     comm);
+        coupled_values = nonlocal_field;
+        for (const auto &[i, j] : from_coupled)
+          w(i) = coupled_values(j);
+      }
     w.compress(VectorOperation::insert);
 
     // u_l at the lattice points of the body outside Omega_n, each in the
@@ -298,31 +309,28 @@ namespace ltn
     const auto &fe = local_dofs.get_fe();
     std::vector<std::pair<types::global_dof_index, double>> local_values;
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-    for_each_in_owned_cells(lattice,
-                            local_dofs,
-                            tol,
-                            [&](const auto                   &cell,
-                                const LatticeIndex           &index,
-                                const types::global_dof_index n,
-                                const Point<dim>             &unit) {
-                              const Point<dim> x = lattice.position(index);
-                              if (reference.role(index) == DofRole::fixed ||
-                                  region.contains_strictly(x, tol))
-                                return;
-                              std::array<double, n_field> value{};
-                              cell->get_dof_indices(cell_dofs);
-                              for (unsigned int k = 0; k < cell_dofs.size();
-                                   ++k)
-                                {
-                                  const unsigned int c =
-                                    fe.system_to_component_index(k).first;
-                                  value[c] +=
-                                    local_field(cell_dofs[k]) *
-                                    fe.shape_value_component(k, unit, c);
-                                }
-                              for (unsigned int c = 0; c < n_field; ++c)
-                                local_values.emplace_back(dof(n, c), value[c]);
-                            });
+    for_each_in_owned_cells(
+      lattice,
+      local_dofs,
+      tol,
+      [&](const auto                   &cell,
+          const LatticeIndex           &index,
+          const types::global_dof_index n,
+          const Point<dim>             &unit) {
+        const Point<dim> x = lattice.position(index);
+        if (reference.role(index) == DofRole::fixed || in_region(x))
+          return;
+        std::array<double, n_field> value{};
+        cell->get_dof_indices(cell_dofs);
+        for (unsigned int k = 0; k < cell_dofs.size(); ++k)
+          {
+            const unsigned int c = fe.system_to_component_index(k).first;
+            value[c] +=
+              local_field(cell_dofs[k]) * fe.shape_value_component(k, unit, c);
+          }
+        for (unsigned int c = 0; c < n_field; ++c)
+          local_values.emplace_back(dof(n, c), value[c]);
+      });
     w += sum_of_entries(model.owned, local_values, comm);
 
     const FieldOperator operator_of_field(model);
@@ -442,7 +450,8 @@ namespace ltn
         const Point<dim> x = lattice.position(lattice.index(n));
         for (unsigned int c = 0; c < n_field; ++c)
           energy += volume * free_part(dof(n, c)) * free_applied(dof(n, c));
-        if (region.depth(x, 2 * interaction_range) > interaction_range + tol)
+        if (coupled &&
+            region.depth(x, 2 * interaction_range) > interaction_range + tol)
           continue;
         bool near_face = false, near_other_face = false;
         for (unsigned int f = 0; f < 2 * dim; ++f)
@@ -517,22 +526,29 @@ namespace ltn
           error_energy += volume * error(i) * error_applied(i);
       return std::sqrt(std::max(Utilities::MPI::sum(error_energy, comm), 0.));
     };
-    if (reference_solution)
-      {
-        record.has_true_error = true;
-        record.true_error     = error_norm(*reference_solution);
-        record.true_relative  = record.true_error / scale;
-        record.effectivity =
-          record.estimate / std::max(record.true_error, 1e-300);
-      }
-    if (region_reference)
-      {
-        record.has_region_error = true;
-        record.region_error     = error_norm(*region_reference);
-        record.region_relative  = record.region_error / scale;
-        record.region_effectivity =
-          record.estimate / std::max(record.region_error, 1e-300);
-      }
+    // The error against @p other, relative, and the estimate's effectivity.
+    const auto measure = [&](const TrilinosWrappers::MPI::Vector *other,
+                             bool                                &has,
+                             double                              &error,
+                             double                              &relative,
+                             double                              &effectivity) {
+      if (!other)
+        return;
+      has         = true;
+      error       = error_norm(*other);
+      relative    = error / scale;
+      effectivity = record.estimate / std::max(error, 1e-300);
+    };
+    measure(reference_solution,
+            record.has_true_error,
+            record.true_error,
+            record.true_relative,
+            record.effectivity);
+    measure(region_reference,
+            record.has_region_error,
+            record.region_error,
+            record.region_relative,
+            record.region_effectivity);
     if (field)
       field->composite = w;
     // The largest contribution and its point, the same on every rank.
@@ -552,7 +568,7 @@ namespace ltn
 #define LTN_INSTANTIATE(dim, Model)               \
   template ModelErrorRecord estimate_model_error( \
     const Geometry<dim> &,                        \
-    const Model &,                                \
+    const Model *,                                \
     const TrilinosWrappers::MPI::Vector &,        \
     const DoFHandler<dim> &,                      \
     const TrilinosWrappers::MPI::Vector &,        \

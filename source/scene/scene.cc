@@ -128,17 +128,16 @@ namespace ltn
   {
     if constexpr (dim > 1)
       {
-        check_input(!starts.empty(),
-                    "Geometry/Nonlocal regions",
-                    "auto",
-                    "boxes, or `auto` in a scene with cracks (Cracks/Corners): "
-                    "the loop starts from each crack's box");
         model_adaptivity.emplace(geometry,
                                  discretization.mesh_size(0),
                                  interaction_range,
                                  starts,
                                  margin);
-        geometry.set_nonlocal_boxes(model_adaptivity->region_boxes());
+        // Without a start the first cycle is the local model alone; the
+        // checks run on the largest region a cycle may reach.
+        geometry.set_nonlocal_boxes(starts.empty() ?
+                                      model_adaptivity->largest_boxes() :
+                                      model_adaptivity->region_boxes());
       }
   }
 

@@ -122,3 +122,63 @@ TEST_CASE("auto regions on a plate with two cracks far apart",
   CHECK(error.region_effectivity >= 0.5);
   CHECK(error.region_effectivity <= 2);
 }
+
+
+
+TEST_CASE("auto regions without cracks start from the local model alone",
+          "[particles][model adaptivity]")
+{
+  // 2D diffusion on [0, 2] x [0, 1] with a source concentrated at
+  // (1.3, 0.5), the same for both models: they differ where the solution
+  // curves most. Blocks of 0.125 (the overlap width).
+  const std::string source = "100*exp(-100*((x-1.3)^2+(y-0.5)^2))";
+  const SceneRun    run =
+    run_scene("diffusion_2d_convergence",
+              {"Geometry/Nonlocal regions=auto",
+               "Geometry/Overlap width=0.125",
+               "Geometry/Model error tolerance=1e-2",
+               "Discretization/Number of levels=1",
+               "Problem data/Exact solution=",
+               "Problem data/Plane wave number=0",
+               "Problem data/Nonlocal right-hand side=" + source,
+               "Problem data/Local right-hand side=" + source,
+               "Problem data/Boundary data=0",
+               "Problem data/Volume constraint data=0",
+               "Postprocess/True model error=true"});
+  const ltn::ModelAdaptivityRecord &loop = run.summary.model_adaptivity;
+  REQUIRE(loop.cycles.size() == 3);
+  // Cycle 0: the local model alone.
+  CHECK(loop.cycles[0].blocks == 0);
+  CHECK(loop.cycles[0].particles == 0);
+  CHECK(loop.cycles[0].estimate > loop.tolerance);
+  // The first blocks: three by three around the source.
+  const auto &seed = loop.cycles[1];
+  CHECK(seed.blocks == 9);
+  REQUIRE(seed.boxes.size() == 1);
+  CHECK(in_boxes(seed.boxes, 1.3, 0.5));
+  const auto &last = loop.cycles.back();
+  CHECK(last.blocks == 21);
+  CHECK(last.stopped == "tolerance");
+  CHECK(last.estimate <= loop.tolerance);
+  for (const auto &cycle : loop.cycles)
+    {
+      const auto &error = run.summary.levels[cycle.level_entry].model_error;
+      REQUIRE(error.has_region_error);
+      INFO("cycle " << cycle.cycle << ": estimate " << cycle.estimate
+                    << ", true " << error.region_relative);
+      CHECK(error.region_effectivity >= 0.5);
+      CHECK(error.region_effectivity <= 2);
+    }
+  CHECK(run.summary.levels[last.level_entry].model_error.region_relative <=
+        loop.tolerance);
+
+  // A linear patch needs no nonlocal model: the local model alone meets
+  // any tolerance, to round-off.
+  const SceneRun patch =
+    run_scene("lps_plate_2d_linear_patch", {"Geometry/Nonlocal regions=auto"});
+  const auto &only = patch.summary.model_adaptivity.cycles;
+  REQUIRE(only.size() == 1);
+  CHECK(only[0].blocks == 0);
+  CHECK(only[0].stopped == "tolerance");
+  CHECK(only[0].estimate <= 1e-10);
+}

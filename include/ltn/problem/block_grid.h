@@ -60,6 +60,16 @@ namespace ltn
     face_neighbours(const unsigned int k) const;
 
     /**
+     * The `(2 radius + 1)^dim` blocks around block @p k, moved as little as
+     * needed to lie within the smallest box of blocks that holds
+     * @p within, and cut to @p within.
+     */
+    Set
+    window(const unsigned int k,
+           const unsigned int radius,
+           const Set         &within) const;
+
+    /**
      * The connected pieces of @p set (blocks joined through faces), each
      * as its blocks in ascending order.
      */

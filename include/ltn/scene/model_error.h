@@ -80,6 +80,8 @@ namespace ltn
    * and `eta_1^2 = a_l(z, z)`; the estimate is `(eta_0^2 + eta_1^2)^(1/2)`.
    * What @p operators holds is used, what it lacks computed into it.
    *
+   * @p coupled is the coupled solution's nonlocal model, null where the
+   * local model covers the body (then `w = u_l` on the whole body).
    * @p reference is the nonlocal model of the same level on the whole body
    * (`Geometry/Models = nonlocal only`, same spacing and stencil, assembled
    * with its data); its lattice must be the coupled one's shifted by whole
@@ -94,7 +96,7 @@ namespace ltn
   template <int dim, typename ParticleModel>
   ModelErrorRecord
   estimate_model_error(const Geometry<dim>                 &geometry,
-                       const ParticleModel                 &coupled,
+                       const ParticleModel                 *coupled,
                        const TrilinosWrappers::MPI::Vector &nonlocal_field,
                        const DoFHandler<dim>               &local_dofs,
                        const TrilinosWrappers::MPI::Vector &local_field,

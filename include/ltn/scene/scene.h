@@ -112,7 +112,9 @@ namespace ltn
      * For `Geometry/Nonlocal regions = auto`: the loop's blocks and its
      * start from @p starts (a box per crack) grown by @p margin beyond the
      * overlap, for a nonlocal model whose collar is @p interaction_range
-     * deep on the coarsest level; `Omega_n` becomes the start. Call after
+     * deep on the coarsest level; `Omega_n` becomes the start (without
+     * starts, the largest region a cycle may reach, which the checks then
+     * see; the first cycle is the local model alone). Call after
      * parse_parameters(), before the geometry is validated.
      */
     void
@@ -159,8 +161,10 @@ namespace ltn
     template <typename Physics>
     struct LevelReference
     {
-      /** The layouts of the two models (which may keep references). */
+      /** The layouts of the two models, and the representer's parameters
+       * (which the models keep references to). */
       Geometry<dim>                               whole_body, local_body;
+      LocalParameters<dim>                        representer_parameters;
       std::unique_ptr<typename Physics::Nonlocal> nonlocal;
       std::unique_ptr<typename Physics::Local>    representer;
       CouplingSolution                            solution;
@@ -186,7 +190,8 @@ namespace ltn
      * - the types `Nonlocal` and `Local` of its models;
      * - `h`, `eps` (the horizon), `collar_depth` (how far out of `Omega_n`
      *   its particles read: one horizon for diffusion, two for LPS);
-     * - `make_nonlocal()`, `make_local()`, and `assemble()` of each model
+     * - `make_nonlocal()`, `make_local(layout, parameters)`, and
+     *   `assemble()` of each model
      *   (of the nonlocal one with the operator matrix-free or not);
      * - `coupling()`: the coupling parameters of the level, whose `auto`
      *   choices run_level() resolves (choose_solvers());
@@ -236,8 +241,9 @@ namespace ltn
                      Progress           &progress);
 
     /**
-     * The model-error estimate of a coupled level (2D, 3D) whose models
-     * @p nonlocal and @p local have the solution @p solution (@p local_field
+     * The model-error estimate of a coupled level (2D, 3D; @p nonlocal null
+     * where the local model covers the body) whose models @p nonlocal and
+     * @p local have the solution @p solution (@p local_field
      * its local part, ghosted): against the level's nonlocal model on the
      * whole body, built into @p reference unless there, and solved with
      * `Postprocess/True model error`, and against @p region_reference if not
@@ -248,7 +254,7 @@ namespace ltn
     ModelErrorRecord
     estimate_level_model_error(
       const Physics                       &physics,
-      const typename Physics::Nonlocal    &nonlocal,
+      const typename Physics::Nonlocal    *nonlocal,
       const typename Physics::Local       &local,
       const CouplingSolution              &solution,
       const TrilinosWrappers::MPI::Vector &local_field,

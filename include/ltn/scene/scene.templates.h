@@ -81,6 +81,7 @@ namespace ltn
       {
         // The reference: its own summary, files and solutions, none kept
         // but its composite field.
+        geometry.models = Geometry<dim>::Models::coupled;
         geometry.set_nonlocal_boxes(loop.largest_boxes());
         RunSummary        scratch;
         WrittenFiles      none;
@@ -98,8 +99,12 @@ namespace ltn
       }
     for (unsigned int cycle = 0;; ++cycle)
       {
+        // An empty region (no crack to start from): the local model alone.
         const std::vector<Box<dim>> boxes = loop.region_boxes();
-        geometry.set_nonlocal_boxes(boxes);
+        geometry.models = boxes.empty() ? Geometry<dim>::Models::local_only :
+                                          Geometry<dim>::Models::coupled;
+        if (!boxes.empty())
+          geometry.set_nonlocal_boxes(boxes);
         const ModelErrorField<dim> field =
           run_level(physics,
                     "level 0, model cycle " + std::to_string(cycle),
@@ -166,6 +171,11 @@ namespace ltn
     const double h = physics.h, eps = physics.eps;
     // The models of the scene: both, or one on the whole body. The local
     // mesh may be refined adaptively within a level.
+    // A mesh is graded towards a nonlocal region only (the local model
+    // alone: a cycle of `auto` without a start).
+    LocalParameters<dim> level_local_parameters = local_parameters;
+    if (!geometry.has_nonlocal_model())
+      level_local_parameters.graded_mesh_layers = 0;
     std::unique_ptr<typename Physics::Nonlocal> nonlocal;
     std::unique_ptr<typename Physics::Local>    local;
     CouplingSolution                            solution;
@@ -197,7 +207,7 @@ namespace ltn
             if (geometry.has_nonlocal_model())
               nonlocal = physics.make_nonlocal();
             if (geometry.has_local_model())
-              local = physics.make_local();
+              local = physics.make_local(geometry, level_local_parameters);
           }
         else
           {
@@ -301,7 +311,7 @@ namespace ltn
               enter("model error estimate");
               record.model_error =
                 estimate_level_model_error(physics,
-                                           *nonlocal,
+                                           nonlocal.get(),
                                            *local,
                                            solution,
                                            local_field,
@@ -419,7 +429,7 @@ namespace ltn
   ModelErrorRecord
   Scene<dim>::estimate_level_model_error(
     const Physics                       &physics,
-    const typename Physics::Nonlocal    &nonlocal,
+    const typename Physics::Nonlocal    *nonlocal,
     const typename Physics::Local       &local,
     const CouplingSolution              &solution,
     const TrilinosWrappers::MPI::Vector &local_field,
@@ -457,12 +467,13 @@ namespace ltn
           }
         // The long waves' representer: the local model of the level on the
         // whole body, on the level's uniform mesh (no hanging nodes).
-        reference.local_body         = geometry;
-        reference.local_body.models  = Geometry<dim>::Models::local_only;
-        LocalParameters<dim> uniform = local_parameters;
-        uniform.graded_mesh_layers   = 0;
+        reference.local_body             = geometry;
+        reference.local_body.models      = Geometry<dim>::Models::local_only;
+        reference.representer_parameters = local_parameters;
+        reference.representer_parameters.graded_mesh_layers = 0;
         reference.representer =
-          physics.make_local(reference.local_body, uniform);
+          physics.make_local(reference.local_body,
+                             reference.representer_parameters);
         physics.assemble(*reference.representer);
       }
     std::array<bool, 2 * dim> dirichlet;
