@@ -182,3 +182,32 @@ TEST_CASE("auto regions without cracks start from the local model alone",
   CHECK(only[0].stopped == "tolerance");
   CHECK(only[0].estimate <= 1e-10);
 }
+
+
+
+TEST_CASE("auto regions with adaptive refinement of the local mesh",
+          "[particles][model adaptivity][adaptive]")
+{
+  // The cracked plate at 5e-5: without refinement the loop needs three
+  // cycles (7,836 particles); one Kelly cycle of the local mesh halves the
+  // start's estimate, which then meets the tolerance: half of it was the
+  // FE solution's own error.
+  const SceneRun                    run  = run_scene("lps_plate_2d_crack",
+                                                     {"Geometry/Nonlocal regions=auto",
+                                                      "Geometry/Model error tolerance=5e-5",
+                                                      "Local model/Adaptive refinement cycles=1"});
+  const ltn::ModelAdaptivityRecord &loop = run.summary.model_adaptivity;
+  REQUIRE(loop.cycles.size() == 1);
+  REQUIRE(run.summary.levels.size() == 2);
+  const auto &cycle = loop.cycles.front();
+  // The cycle is judged on its last (refined) solve.
+  CHECK(cycle.level_entry == 1);
+  CHECK(cycle.blocks == 40);
+  CHECK(cycle.stopped == "tolerance");
+  const auto &coarse = run.summary.levels[0], &refined = run.summary.levels[1];
+  CHECK(refined.n_local_dofs > coarse.n_local_dofs);
+  INFO("estimates " << coarse.model_error.relative << ", "
+                    << refined.model_error.relative);
+  CHECK(coarse.model_error.relative > loop.tolerance);
+  CHECK(refined.model_error.relative <= loop.tolerance);
+}
