@@ -74,6 +74,30 @@ namespace ltn
     };
 
     /**
+     * The finite element field @p field (ghosted) at the point of unit
+     * coordinates @p unit of a cell with the degrees of freedom
+     * @p cell_dofs: one value per component (at most three).
+     */
+    template <int dim>
+    std::array<double, 3>
+    value_in_cell(const FiniteElement<dim>                   &fe,
+                  const std::vector<types::global_dof_index> &cell_dofs,
+                  const TrilinosWrappers::MPI::Vector        &field,
+                  const Point<dim>                           &unit)
+    {
+      std::array<double, 3> value{};
+      for (unsigned int k = 0; k < cell_dofs.size(); ++k)
+        {
+          const unsigned int c = fe.system_to_component_index(k).first;
+          value[c] +=
+            field(cell_dofs[k]) * fe.shape_value_component(k, unit, c);
+        }
+      return value;
+    }
+
+
+
+    /**
      * The vector over @p owned holding the sums of @p entries (global index,
      * value), which this rank may hold for indices other ranks own.
      * Collective.
@@ -129,16 +153,29 @@ namespace ltn
                   ExcMessage("The error representer needs a mesh without "
                              "hanging nodes."));
       const auto &fe = dofs.get_fe();
-      // The residual at the particles in this rank's cells.
-      IndexSet needed(residual.size());
+      // The particles in this rank's cells, found once: each with its
+      // cell and its unit coordinates there.
+      struct Visit
+      {
+        typename DoFHandler<dim>::active_cell_iterator cell;
+        types::global_dof_index                        n;
+        Point<dim>                                     x, unit;
+      };
+      std::vector<Visit> visits;
+      IndexSet           needed(residual.size());
       for_each_in_owned_cells(
         lattice,
         dofs,
         tol,
-        [&](const auto &, const auto &, const auto n, const Point<dim> &) {
+        [&](const auto       &cell,
+            const auto       &index,
+            const auto        n,
+            const Point<dim> &unit) {
+          visits.push_back({cell, n, lattice.position(index), unit});
           for (unsigned int c = 0; c < n_field; ++c)
             needed.add_index(dof(n, c));
         });
+      // The residual there.
       needed.compress();
       needed.add_indices(residual.locally_owned_elements());
       TrilinosWrappers::MPI::Vector r(residual.locally_owned_elements(),
@@ -146,32 +183,21 @@ namespace ltn
                                       comm);
       r = residual;
 
-      // The field of the representer's shape functions at a particle.
       std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-      const auto                           visit = [&](const auto &action) {
-        for_each_in_owned_cells(lattice,
-                                dofs,
-                                tol,
-                                [&](const auto       &cell,
-                                    const auto       &index,
-                                    const auto        n,
-                                    const Point<dim> &unit) {
-                                  cell->get_dof_indices(cell_dofs);
-                                  action(lattice.position(index), n, unit);
-                                });
-      };
       std::vector<std::pair<types::global_dof_index, double>> loads;
-      visit([&](const Point<dim> &, const auto n, const Point<dim> &unit) {
-        for (unsigned int k = 0; k < cell_dofs.size(); ++k)
-          {
-            const unsigned int c     = fe.system_to_component_index(k).first;
-            const double       value = r(dof(n, c));
-            if (value != 0)
-              loads.emplace_back(cell_dofs[k],
-                                 volume * value *
-                                   fe.shape_value_component(k, unit, c));
-          }
-      });
+      for (const Visit &visit : visits)
+        {
+          visit.cell->get_dof_indices(cell_dofs);
+          for (unsigned int k = 0; k < cell_dofs.size(); ++k)
+            {
+              const unsigned int c     = fe.system_to_component_index(k).first;
+              const double       value = r(dof(visit.n, c));
+              if (value != 0)
+                loads.emplace_back(
+                  cell_dofs[k],
+                  volume * value * fe.shape_value_component(k, visit.unit, c));
+            }
+        }
       TrilinosWrappers::MPI::Vector F = representer.new_vector();
       F = sum_of_entries(representer.owned, loads, comm);
       for (const auto i : representer.fixed)
@@ -192,20 +218,20 @@ namespace ltn
         {
           const TrilinosWrappers::MPI::Vector z_ghosted =
             representer.ghosted(z);
-          visit([&](const Point<dim> &x, const auto n, const Point<dim> &unit) {
-            double term = 0;
-            for (unsigned int k = 0; k < cell_dofs.size(); ++k)
-              {
-                const unsigned int c = fe.system_to_component_index(k).first;
-                term += volume * r(dof(n, c)) * z_ghosted(cell_dofs[k]) *
-                        fe.shape_value_component(k, unit, c);
-              }
-            if (term != 0)
-              {
-                field->long_wave_points.push_back(x);
-                field->long_wave_terms.push_back(term);
-              }
-          });
+          for (const Visit &visit : visits)
+            {
+              visit.cell->get_dof_indices(cell_dofs);
+              const std::array<double, 3> z_at =
+                value_in_cell(fe, cell_dofs, z_ghosted, visit.unit);
+              double term = 0;
+              for (unsigned int c = 0; c < n_field; ++c)
+                term += volume * r(dof(visit.n, c)) * z_at[c];
+              if (term != 0)
+                {
+                  field->long_wave_points.push_back(visit.x);
+                  field->long_wave_terms.push_back(term);
+                }
+            }
         }
       return std::sqrt(std::max(eta_1_squared, 0.));
     }
@@ -309,28 +335,23 @@ namespace ltn
     const auto &fe = local_dofs.get_fe();
     std::vector<std::pair<types::global_dof_index, double>> local_values;
     std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-    for_each_in_owned_cells(
-      lattice,
-      local_dofs,
-      tol,
-      [&](const auto                   &cell,
-          const LatticeIndex           &index,
-          const types::global_dof_index n,
-          const Point<dim>             &unit) {
-        const Point<dim> x = lattice.position(index);
-        if (reference.role(index) == DofRole::fixed || in_region(x))
-          return;
-        std::array<double, n_field> value{};
-        cell->get_dof_indices(cell_dofs);
-        for (unsigned int k = 0; k < cell_dofs.size(); ++k)
-          {
-            const unsigned int c = fe.system_to_component_index(k).first;
-            value[c] +=
-              local_field(cell_dofs[k]) * fe.shape_value_component(k, unit, c);
-          }
-        for (unsigned int c = 0; c < n_field; ++c)
-          local_values.emplace_back(dof(n, c), value[c]);
-      });
+    for_each_in_owned_cells(lattice,
+                            local_dofs,
+                            tol,
+                            [&](const auto                   &cell,
+                                const LatticeIndex           &index,
+                                const types::global_dof_index n,
+                                const Point<dim>             &unit) {
+                              const Point<dim> x = lattice.position(index);
+                              if (reference.role(index) == DofRole::fixed ||
+                                  in_region(x))
+                                return;
+                              cell->get_dof_indices(cell_dofs);
+                              const std::array<double, 3> value =
+                                value_in_cell(fe, cell_dofs, local_field, unit);
+                              for (unsigned int c = 0; c < n_field; ++c)
+                                local_values.emplace_back(dof(n, c), value[c]);
+                            });
     w += sum_of_entries(model.owned, local_values, comm);
 
     const FieldOperator operator_of_field(model);

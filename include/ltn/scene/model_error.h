@@ -37,6 +37,12 @@ namespace ltn
      */
     std::vector<Point<dim>> long_wave_points;
     std::vector<double>     long_wave_terms;
+    /**
+     * Under `Nonlocal regions = auto`: `eta_K^2` per block
+     * (ModelAdaptivity::block_indicators()), summed once for the output
+     * and the marking.
+     */
+    std::vector<double> block_indicators;
   };
 
   /**

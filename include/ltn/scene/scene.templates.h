@@ -128,10 +128,7 @@ namespace ltn
             entry.boxes.push_back(corners);
           }
         const bool go_on =
-          loop.adapt(level.model_error,
-                     loop.block_indicators(field, MPI_COMM_WORLD),
-                     cycle,
-                     entry);
+          loop.adapt(level.model_error, field.block_indicators, cycle, entry);
         out << "model cycle " << cycle << ": " << entry.blocks << " blocks in "
             << boxes.size() << (boxes.size() == 1 ? " box, " : " boxes, ")
             << entry.particles << " particles, estimate " << std::scientific
@@ -321,12 +318,13 @@ namespace ltn
                                            model_error_field);
               if (model_adaptivity)
                 {
-                  const std::vector<double> blocks =
+                  model_error_field.block_indicators =
                     model_adaptivity->block_indicators(model_error_field,
                                                        MPI_COMM_WORLD);
                   for (const Point<dim> &p : model_error_field.points)
                     block_indicator.push_back(
-                      blocks[model_adaptivity->block_of(p)]);
+                      model_error_field
+                        .block_indicators[model_adaptivity->block_of(p)]);
                 }
               timer.leave_subsection();
             }
