@@ -14,7 +14,7 @@ def centred_plate(side):
             "Geometry/Nonlocal region upper corner=%g, %g" % (c + 0.5,
                                                                c + 0.25),
             "Cracks/Corners=%g, %g, %g, %g" % (c - 0.25, c, c + 0.25, c),
-            "Problem data/Boundary data=-1e-3*nu*(1 + nu)/E*(x - %g); "
+            "Elasticity data/Boundary data=-1e-3*nu*(1 + nu)/E*(x - %g); "
             "1e-3*(1 - nu^2)/E*(y - %g)" % (c, c),
             "Postprocess/Reference crack opening=4*1e-3/Eprime*"
             "sqrt(max(0.0625 - (x - %g)^2, 0))" % c]

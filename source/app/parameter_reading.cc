@@ -7,6 +7,7 @@
 #include <ltn/scene/elasticity_scene.h>
 
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 namespace ltn
@@ -44,6 +45,21 @@ namespace ltn
           c = ' ';
       return Utilities::trim(text);
     }
+
+    /**
+     * An InputError naming @p where if @p found: the scene's data moved
+     * from `Problem data` to one subsection per physics.
+     */
+    void
+    check_no_problem_data(const bool found, const std::string &where)
+    {
+      check_input(!found,
+                  "Problem data",
+                  where,
+                  "renamed, one subsection per physics: `Diffusion data` "
+                  "(Model = diffusion) or `Elasticity data` (Model = "
+                  "elasticity)");
+    }
   } // namespace
 
 
@@ -57,6 +73,15 @@ namespace ltn
                 "scene file",
                 filename,
                 "a readable .prm file");
+    {
+      const std::regex old_subsection(
+        R"(\s*subsection\s+Problem\s+data\s*(#.*)?)");
+      std::ifstream file(filename);
+      std::string   line;
+      while (std::getline(file, line))
+        check_no_problem_data(std::regex_match(line, old_subsection),
+                              "a subsection in " + filename);
+    }
     try
       {
         prm.parse_input(filename);
@@ -87,6 +112,8 @@ namespace ltn
                     "\"Subsection/.../name=value\" with a parameter name");
         const std::string name = path.back();
         path.pop_back();
+        check_no_problem_data(!path.empty() && path[0] == "Problem data",
+                              assignment);
         check_input(path.empty() || prm.subsection_path_exists(path),
                     "--set",
                     assignment,

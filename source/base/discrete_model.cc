@@ -89,7 +89,7 @@ namespace ltn
     const auto bytes = [](const TrilinosWrappers::SparseMatrix &m) {
       return m.m() == 0 ? std::size_t(0) : m.memory_consumption();
     };
-    return bytes(matrix) + bytes(surrogate) + bytes(surrogate_collar) +
+    return bytes(matrix) + (lattice ? lattice->memory_consumption() : 0) +
            (matrix_free ? matrix_free->memory_consumption() : 0) +
            rhs.memory_consumption();
   }

@@ -24,13 +24,14 @@ namespace ltn
                                        0,
                                        6),
                         "Faces of the body with the Dirichlet condition "
-                        "u = `Problem data/Boundary data` (and, where the "
-                        "nonlocal region touches them, the volume constraint "
-                        "on its physical collar). The other faces of the "
-                        "local region on the body's boundary get the Neumann "
-                        "condition: du/dn = `Problem data/Boundary gradient` "
-                        ". n in diffusion, the traction `Problem data/"
-                        "Traction` - `Pressure` n in elasticity.");
+                        "u = `Boundary data` of `Diffusion data` or "
+                        "`Elasticity data` (and, where the nonlocal region "
+                        "touches them, the volume constraint on its physical "
+                        "collar). The other faces of the local region on the "
+                        "body's boundary get the Neumann condition: du/dn = "
+                        "`Diffusion data/Boundary gradient` . n in "
+                        "diffusion, the traction `Elasticity data/Traction` "
+                        "- `Pressure` n in elasticity.");
       prm.declare_entry("Dirichlet components",
                         "",
                         Patterns::Anything(),

@@ -5,12 +5,15 @@
 namespace ltn
 {
   ModelPreconditioner::ModelPreconditioner(
-    const DiscreteModel             &model,
-    const std::vector<unsigned int> &subset)
-    : on_surrogate(model.surrogate.m() > 0)
-    , node_dofs(model.node_dofs)
-    , surrogate_components(model.surrogate_components)
-    , nodes(model.surrogate_nodes)
+    const DiscreteModel              &model,
+    const std::vector<unsigned int>  &subset,
+    const SurrogateMultigridSettings &settings)
+    : on_surrogate(model.lattice != nullptr)
+    , node_dofs(on_surrogate ? model.lattice->node_dofs : 1)
+    , surrogate_components(
+        on_surrogate ? model.lattice->surrogate().components : 1)
+    , nodes(on_surrogate ? model.lattice->surrogate().nodes :
+                           std::vector<unsigned int>())
     , subset(subset)
   {
     if (on_surrogate)
@@ -80,18 +83,16 @@ namespace ltn
     // aggregate apart while still giving each aggregate a coarse unknown
     // per component of the near null space.
     //
-    // Coarsened until at most the model's surrogate_coarsest_rows are left:
-    // 200 on a 3D lattice, not deal.II's 2000, whose coarse levels are
-    // dense enough that the direct solve of a level of a thousand or more
-    // rows costs as much as the finest level's smoothing; 2000 on a 2D
-    // lattice, whose coarse levels stay sparse, so that a larger coarsest
-    // level saves iterations at little cost (measurements:
-    // benchmarks/scaling/HISTORY.md, "Figures code comments quoted").
+    // Coarsened until at most the settings' coarsest rows of the lattice's
+    // dimension are left (measurements: benchmarks/scaling/HISTORY.md,
+    // "Figures code comments quoted").
+    const LatticeSurrogate             &lattice = model.lattice->surrogate();
     Teuchos::ParameterList              parameters;
     std::unique_ptr<Epetra_MultiVector> no_modes;
-    data.set_parameters(parameters, no_modes, model.surrogate);
+    data.set_parameters(parameters, no_modes, lattice.matrix);
     parameters.set("coarse: max size",
-                   static_cast<int>(model.surrogate_coarsest_rows));
+                   static_cast<int>(
+                     settings.coarsest_rows.at(lattice.dimension - 2)));
     // One Chebyshev sweep on the surrogate, not the three of the FEM
     // matrices: what the V-cycle misses of the particle model is mostly its
     // difference from the surrogate, not the surrogate's smooth error
@@ -99,8 +100,8 @@ namespace ltn
     parameters.set("smoother: sweeps", 1);
     // ML's finest level multiplies by the surrogate's stencil, not by its
     // compressed rows ('Iterative model solvers').
-    amg.initialize(model.surrogate, parameters);
-    const Epetra_CrsMatrix &surrogate = model.surrogate.trilinos_matrix();
+    amg.initialize(lattice.matrix, parameters);
+    const Epetra_CrsMatrix &surrogate = lattice.matrix.trilinos_matrix();
     stencil = std::make_unique<StencilMatrix>(surrogate);
     if (!stencil->is_stencil() || !stencil->serve_finest_level(amg))
       stencil.reset();
@@ -122,15 +123,13 @@ namespace ltn
                                                    surrogate_components);
     node_out = std::make_unique<Epetra_MultiVector>(*node_in);
     // The short-wave term (doc/discretization.md, 'Iterative model
-    // solvers'): on the 3D
-    // cracked bar of benchmarks/scaling it took the nonlocal CG iterations
-    // from 831 to 600 (1e4) and from 877 to 686 (1e5).
-    const IndexSet &rows = model.surrogate.locally_owned_range_indices();
+    // solvers').
+    const IndexSet &rows = lattice.matrix.locally_owned_range_indices();
     short_wave_scaling.resize(nodes.size());
     for (std::size_t i = 0; i < nodes.size(); ++i)
       short_wave_scaling[i] =
-        model.short_wave_weight /
-        model.surrogate.diag_element(rows.nth_index_in_set(i));
+        settings.short_wave_factor * lattice.long_wave_ratio /
+        lattice.matrix.diag_element(rows.nth_index_in_set(i));
   }
 
 

@@ -71,7 +71,7 @@ namespace ltn
     // keep GMRES. CG's free block keeps the constraint rows of hanging
     // nodes, which are not symmetric.
     , use_cg(settings.kind == ModelSolverKind::preconditioned_cg &&
-             model.symmetric_free_block && model.surrogate.m() > 0 &&
+             model.symmetric_free_block && model.lattice &&
              Utilities::MPI::max(model.constrained.n_elements(),
                                  model.communicator) == 0)
     , tolerance(settings.relative_tolerance)
@@ -96,7 +96,8 @@ namespace ltn
         preconditioner = std::make_unique<ModelPreconditioner>(
           model,
           use_cg ? forward_system->free_positions() :
-                   std::vector<unsigned int>());
+                   std::vector<unsigned int>(),
+          settings.multigrid);
         counts.memory = preconditioner->memory_consumption() +
                         forward_system->memory_consumption();
         if (with_adjoint)

@@ -9,14 +9,14 @@ namespace ltn
   assemble_lattice_surrogate(
     const ParticleLattice<dim> &lattice,
     const IndexSet             &owned_particles,
-    const unsigned int          n_components,
     const unsigned int          n_field_components,
     const double                diagonal,
     const double                long_wave_modulus,
     const std::vector<double>  &collar_trace,
     const double                spacing,
     const std::function<bool(const Point<dim> &, const Point<dim> &)> &is_cut,
-    DiscreteModel                                                     &model)
+    const MPI_Comm    communicator,
+    LatticeSurrogate &surrogate)
   {
     using LatticeIndex    = typename ParticleLattice<dim>::LatticeIndex;
     const double coupling = diagonal / (2 * dim);
@@ -65,13 +65,13 @@ namespace ltn
     // identities, a fifth of the rows of the 10^6 bar's multigrid
     // hierarchy. A rank's particles of Omega_n have contiguous numbers
     // among those of Omega_n (ParticleLattice::inside_number).
-    model.surrogate_nodes.clear();
+    surrogate.nodes.clear();
     IndexSet rows(lattice.n_inside());
     for (const auto p : owned_particles)
       if (const LatticeIndex index = lattice.index(p); lattice.inside(index))
         {
           rows.add_index(lattice.inside_number(index));
-          model.surrogate_nodes.push_back(owned_particles.index_within_set(p));
+          surrogate.nodes.push_back(owned_particles.index_within_set(p));
         }
     rows.compress();
     AssertThrow(rows.is_contiguous(), ExcInternalError());
@@ -92,60 +92,39 @@ namespace ltn
           for (const auto &[q, weight] : collar_neighbours)
             collar_dsp.add(row, q);
         }
-    model.surrogate.reinit(rows, rows, dsp, model.communicator);
-    model.surrogate_collar.reinit(rows,
-                                  owned_particles,
-                                  collar_dsp,
-                                  model.communicator);
+    surrogate.matrix.reinit(rows, rows, dsp, communicator);
+    surrogate.collar.reinit(rows, owned_particles, collar_dsp, communicator);
     for (const auto p : owned_particles)
       if (const LatticeIndex index = lattice.index(p); lattice.inside(index))
         {
           const auto row = lattice.inside_number(index);
-          model.surrogate.set(row, row, coupling * axis_bonds(p));
+          surrogate.matrix.set(row, row, coupling * axis_bonds(p));
           for (const auto q : neighbours)
-            model.surrogate.set(row, q, -coupling);
+            surrogate.matrix.set(row, q, -coupling);
           for (const auto &[q, weight] : collar_neighbours)
-            model.surrogate_collar.set(row, q, coupling * weight);
+            surrogate.collar.set(row, q, coupling * weight);
         }
-    model.surrogate.compress(VectorOperation::insert);
-    model.surrogate_collar.compress(VectorOperation::insert);
-    // Measured optimum ('Iterative model solvers'): 0.6 for 2D diffusion
-    // (eps = 3h), 2D
-    // LPS with a crack (eps = 2h) and the 3D cracked bar (eps = 2h) alike.
-    // The two terms overlap at wavelengths between h and eps, hence less
-    // than 1.
-    const double overlap_factor = 0.6;
-    model.short_wave_weight     = overlap_factor * long_wave_modulus /
-                              (diagonal * spacing * spacing / (2 * dim));
-    model.node_dofs            = n_components;
-    model.surrogate_components = n_field_components;
-    // Measured ('Iterative model solvers', "The hierarchy's size";
-    // ModelPreconditioner).
-    model.surrogate_coarsest_rows = dim == 2 ? 2000 : 200;
+    surrogate.matrix.compress(VectorOperation::insert);
+    surrogate.collar.compress(VectorOperation::insert);
+    surrogate.components = n_field_components;
+    surrogate.dimension  = dim;
+    surrogate.long_wave_ratio =
+      long_wave_modulus / (diagonal * spacing * spacing / (2 * dim));
   }
 
-  template void
-  assemble_lattice_surrogate<2>(
-    const ParticleLattice<2> &,
-    const IndexSet &,
-    unsigned int,
-    unsigned int,
-    double,
-    double,
-    const std::vector<double> &,
-    double,
-    const std::function<bool(const Point<2> &, const Point<2> &)> &,
-    DiscreteModel &);
-  template void
-  assemble_lattice_surrogate<3>(
-    const ParticleLattice<3> &,
-    const IndexSet &,
-    unsigned int,
-    unsigned int,
-    double,
-    double,
-    const std::vector<double> &,
-    double,
-    const std::function<bool(const Point<3> &, const Point<3> &)> &,
-    DiscreteModel &);
+#define LTN_INSTANTIATE(dim)                                             \
+  template void assemble_lattice_surrogate<dim>(                         \
+    const ParticleLattice<dim> &,                                        \
+    const IndexSet &,                                                    \
+    unsigned int,                                                        \
+    double,                                                              \
+    double,                                                              \
+    const std::vector<double> &,                                         \
+    double,                                                              \
+    const std::function<bool(const Point<dim> &, const Point<dim> &)> &, \
+    MPI_Comm,                                                            \
+    LatticeSurrogate &);
+  LTN_INSTANTIATE(2)
+  LTN_INSTANTIATE(3)
+#undef LTN_INSTANTIATE
 } // namespace ltn

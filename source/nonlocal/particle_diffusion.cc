@@ -1,6 +1,5 @@
 #include <ltn/nonlocal/collar_trace.h>
 #include <ltn/nonlocal/lattice_operator.h>
-#include <ltn/nonlocal/lattice_surrogate.h>
 #include <ltn/nonlocal/particle_diffusion.h>
 
 namespace ltn
@@ -80,17 +79,11 @@ namespace ltn
       axis_projection(stencil.offsets(), [&](const std::size_t k) {
         return stencil.coefficients()[k];
       });
-    assemble_lattice_surrogate<dim>(
-      lattice,
-      model.owned,
-      1,
-      1,
+    this->offer_lattice(
       diagonal,
       1., // the moment conditions make the long-wave limit the Laplacian
       collar_trace_weights(projected),
-      spacing,
-      [](const Point<dim> &, const Point<dim> &) { return false; },
-      model);
+      [](const Point<dim> &, const Point<dim> &) { return false; });
     model.eliminated = IndexSet(model.owned.size());
     // a_j = a_{-j}: the free block is symmetric, and positive definite
     // (doc/discretization.md, 'Why the system is nonsingular').

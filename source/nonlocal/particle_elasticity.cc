@@ -1,6 +1,5 @@
 #include <ltn/nonlocal/collar_trace.h>
 #include <ltn/nonlocal/lattice_operator.h>
-#include <ltn/nonlocal/lattice_surrogate.h>
 #include <ltn/nonlocal/particle_elasticity.h>
 
 #include <algorithm>
@@ -345,19 +344,12 @@ namespace ltn
         return stencil.weights()[k] * stencil.bonds()[k][1] *
                stencil.bonds()[k][1] / stencil.bonds()[k].norm_square();
       });
-    assemble_lattice_surrogate<dim>(
-      lattice,
-      owned_particles,
-      n_components,
-      dim,
-      diagonal,
-      coefficient_B / (dim * (dim + 2)), // the shear modulus
-      collar_trace_weights(projected),
-      spacing,
-      [this](const Point<dim> &x, const Point<dim> &y) {
-        return near_crack(x) && is_cut(x, y);
-      },
-      model);
+    this->offer_lattice(diagonal,
+                        coefficient_B / (dim * (dim + 2)), // the shear modulus
+                        collar_trace_weights(projected),
+                        [this](const Point<dim> &x, const Point<dim> &y) {
+                          return near_crack(x) && is_cut(x, y);
+                        });
     model.eliminated = IndexSet(model.owned.size());
     for (const auto n : owned_particles)
       model.eliminated.add_index(dof(n, dim));

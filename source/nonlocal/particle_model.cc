@@ -1,5 +1,6 @@
 #include <ltn/base/partition.h>
 #include <ltn/nonlocal/lattice_stencil.h>
+#include <ltn/nonlocal/lattice_surrogate.h>
 #include <ltn/nonlocal/particle_model.h>
 #include <ltn/nonlocal/peridynamic_stencil.h>
 
@@ -54,10 +55,6 @@ namespace ltn
       [](const types::global_dof_index i) {
         return static_cast<unsigned int>(i % n_components);
       });
-    model.locate_nodes<dim>(owned_particles,
-                            [&](const types::global_dof_index n) {
-                              return lattice.position(lattice.index(n));
-                            });
   }
 
 
@@ -89,6 +86,41 @@ namespace ltn
             }
       }
     model.rhs.compress(VectorOperation::insert);
+  }
+
+
+
+  template <int dim,
+            typename Stencil,
+            unsigned int n_dofs,
+            unsigned int n_field>
+  void
+  ParticleModel<dim, Stencil, n_dofs, n_field>::offer_lattice(
+    const double               diagonal,
+    const double               long_wave_modulus,
+    const std::vector<double> &collar_trace,
+    std::function<bool(const Point<dim> &, const Point<dim> &)> is_cut)
+  {
+    std::vector<std::array<double, 3>> node_positions;
+    for (const auto n : owned_particles)
+      node_positions.push_back(
+        DiscreteModel::padded<dim>(lattice.position(lattice.index(n))));
+    model.lattice = std::make_shared<const ModelLattice>(
+      n_components,
+      std::move(node_positions),
+      [this, diagonal, long_wave_modulus, collar_trace, is_cut](
+        LatticeSurrogate &surrogate) {
+        assemble_lattice_surrogate<dim>(lattice,
+                                        owned_particles,
+                                        n_field_components,
+                                        diagonal,
+                                        long_wave_modulus,
+                                        collar_trace,
+                                        spacing,
+                                        is_cut,
+                                        model.communicator,
+                                        surrogate);
+      });
   }
 
 

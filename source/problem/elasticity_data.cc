@@ -1,6 +1,7 @@
 #include <deal.II/base/numbers.h>
 
 #include <ltn/base/input_error.h>
+#include <ltn/problem/data_entries.h>
 #include <ltn/problem/elasticity_data.h>
 
 #include <array>
@@ -8,27 +9,37 @@
 
 namespace ltn
 {
+  ElasticityData::ElasticityData()
+    : SolutionData("Elasticity data")
+  {}
+
+
+
   void
   ElasticityData::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Problem data");
+    prm.enter_subsection("Elasticity data");
     {
+      SolutionData::declare_solution_entries(
+        prm,
+        "the displacement u (dim components separated "
+        "by ';')");
       prm.declare_entry("Body force",
                         "",
                         Patterns::Anything(),
-                        "Elasticity: the body force b (dim components "
+                        "The body force b (dim components "
                         "separated by ';') of both models. Empty: zero.");
       prm.declare_entry("Traction",
                         "",
                         Patterns::Anything(),
-                        "Elasticity: the traction t (dim components) on the "
+                        "The traction t (dim components) on the "
                         "local model's Neumann faces (the body faces of the "
                         "local region that are not Dirichlet for a "
                         "component). Empty: zero.");
       prm.declare_entry("Pressure",
                         "0",
                         Patterns::Anything(),
-                        "Elasticity: a pressure p on the same faces, adding "
+                        "A pressure p on the same faces, adding "
                         "the traction -p n (n the outward normal): a negative "
                         "pressure pulls.");
     }
@@ -40,30 +51,12 @@ namespace ltn
   void
   ElasticityData::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Problem data");
+    prm.enter_subsection(subsection);
     {
-      exact_solution         = prm.get("Exact solution");
-      body_force             = prm.get("Body force");
-      boundary_data          = prm.get("Boundary data");
-      volume_constraint_data = prm.get("Volume constraint data");
-      traction               = prm.get("Traction");
-      pressure               = prm.get("Pressure");
-      for (const std::string name :
-           {"Nonlocal right-hand side", "Local right-hand side"})
-        check_input(prm.get(name) == "0",
-                    "Problem data/" + name,
-                    prm.get(name),
-                    "the default 0: diffusion scenes only (elasticity "
-                    "scenes give a Body force)");
-      check_input(prm.get("Boundary gradient").empty(),
-                  "Problem data/Boundary gradient",
-                  prm.get("Boundary gradient"),
-                  "empty: diffusion scenes only (elasticity scenes give a "
-                  "Traction or Pressure)");
-      check_input(prm.get_double("Plane wave number") == 0,
-                  "Problem data/Plane wave number",
-                  prm.get("Plane wave number"),
-                  "0: diffusion scenes only");
+      parse_solution_entries(prm);
+      body_force = prm.get("Body force");
+      traction   = prm.get("Traction");
+      pressure   = prm.get("Pressure");
     }
     prm.leave_subsection();
   }
@@ -75,27 +68,21 @@ namespace ltn
   {
     // Each elasticity-only entry with its default: a diffusion scene that
     // sets one would silently ignore it.
-    const std::vector<std::array<std::string, 3>> entries = {
-      {{"Problem data", "Body force", ""}},
-      {{"Problem data", "Traction", ""}},
-      {{"Problem data", "Pressure", "0"}},
+    std::vector<DefaultEntry> entries = ElasticityData().solution_entries();
+    const std::vector<DefaultEntry> others = {
+      {{"Elasticity data", "Body force", ""}},
+      {{"Elasticity data", "Traction", ""}},
+      {{"Elasticity data", "Pressure", "0"}},
       {{"Material", "Young's modulus", "1"}},
       {{"Material", "Poisson ratio", "0.25"}},
       {{"Material", "Plane", "strain"}},
       {{"Cracks", "Corners", ""}},
       {{"Postprocess", "Section planes", ""}},
       {{"Postprocess", "Reference crack opening", ""}}};
-    for (const auto &[subsection, name, default_value] : entries)
-      {
-        prm.enter_subsection(subsection);
-        const std::string value = prm.get(name);
-        prm.leave_subsection();
-        check_input(value == default_value,
-                    subsection + "/" + name,
-                    value,
-                    "its default `" + default_value +
-                      "`: elasticity scenes only (Model = elasticity)");
-      }
+    entries.insert(entries.end(), others.begin(), others.end());
+    check_at_defaults(prm,
+                      entries,
+                      "elasticity scenes only (Model = elasticity)");
   }
 
 
@@ -121,20 +108,16 @@ namespace ltn
     const auto make = [&](const std::string &name,
                           const std::string &text,
                           const unsigned int n_components = dim) {
-      return std::make_unique<Expression<dim>>("Problem data/" + name,
-                                               text,
-                                               constants,
-                                               n_components);
+      return expression<dim>(name, text, constants, n_components);
     };
     const auto or_exact = [&](const std::string &name,
                               const std::string &text) {
-      check_input(!text.empty() || !exact_solution.empty(),
-                  "Problem data/" + name,
-                  text,
-                  "an expression of " + std::to_string(dim) +
-                    " components separated by ';'; it may be empty only "
-                    "when an Exact solution is given, which is then used");
-      return make(name, text.empty() ? exact_solution : text);
+      return this->or_exact<dim>(name,
+                                 text,
+                                 constants,
+                                 dim,
+                                 "an expression of " + std::to_string(dim) +
+                                   " components separated by ';'");
     };
 
     Functions<dim> f;

@@ -17,10 +17,10 @@ namespace ltn
     /** The problem's functions of the level with mesh size @p h and kernel
      * @p kernel, whose horizon and plane-wave symbol the expressions use. */
     template <int dim>
-    ProblemData::Functions<dim>
-    level_functions(const ProblemData &data,
-                    const Kernel      &kernel,
-                    const double       h)
+    DiffusionData::Functions<dim>
+    level_functions(const DiffusionData &data,
+                    const Kernel        &kernel,
+                    const double         h)
     {
       return data.functions<dim>(
         kernel.horizon(),
@@ -49,15 +49,15 @@ namespace ltn
       using SceneLevel<dim>::coupling_parameters;
       using SceneLevel<dim>::h;
 
-      const MPI_Comm                    communicator;
-      const Kernel                      kernel;
-      const ProblemData::Functions<dim> data;
-      const double                      eps                = kernel.horizon();
-      const double                      collar_depth       = eps;
-      const std::string                 nonlocal_file      = "nonlocal_field";
-      const std::string                 local_file         = "local_field";
-      const std::string                 dofs_label         = "nonlocal dofs";
-      static constexpr bool             grouped_collection = false;
+      const MPI_Comm                      communicator;
+      const Kernel                        kernel;
+      const DiffusionData::Functions<dim> data;
+      const double                        eps                = kernel.horizon();
+      const double                        collar_depth       = eps;
+      const std::string                   nonlocal_file      = "nonlocal_field";
+      const std::string                   local_file         = "local_field";
+      const std::string                   dofs_label         = "nonlocal dofs";
+      static constexpr bool               grouped_collection = false;
 
       std::unique_ptr<Nonlocal>
       make_nonlocal() const
@@ -177,7 +177,7 @@ namespace ltn
     Geometry<dim>::declare_parameters(prm);
     NonlocalParameters::declare_parameters(prm);
     LocalParameters<dim>::declare_parameters(prm);
-    ProblemData::declare_parameters(prm);
+    DiffusionData::declare_parameters(prm);
     Discretization::declare_parameters(prm);
     CouplingParameters::declare_parameters(prm);
     Scene<dim>::declare_output_parameters(prm);

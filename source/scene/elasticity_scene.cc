@@ -4,6 +4,7 @@
 #include <ltn/nonlocal/particle_elasticity.h>
 #include <ltn/output/elasticity_output.h>
 #include <ltn/output/fracture_measurements.h>
+#include <ltn/problem/diffusion_data.h>
 #include <ltn/scene/elasticity_scene.h>
 #include <ltn/scene/scene.templates.h>
 
@@ -387,6 +388,8 @@ namespace ltn
       material.parse_parameters(prm);
       crack_set.parse_parameters(prm);
       data.parse_parameters(prm);
+      // What only diffusion scenes use must not be set here.
+      DiffusionData::check_unused(prm);
     });
     coupling_parameters.check_operator(nonlocal_parameters.operator_storage ==
                                          OperatorStorage::matrix_free,

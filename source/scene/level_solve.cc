@@ -32,8 +32,8 @@ namespace ltn
     AssertThrow(all_finite({nonlocal ? &nonlocal->rhs : nullptr,
                             local ? &local->rhs : nullptr}),
                 ExcMessage(
-                  "The data are not finite: an expression of Problem data "
-                  "has values that are not finite at some particle or "
+                  "The data are not finite: an expression of the scene's "
+                  "data has values that are not finite at some particle or "
                   "quadrature point (a division by zero, a logarithm of a "
                   "negative number, ...)."));
 
@@ -143,38 +143,22 @@ namespace ltn
       }
   }
 
-#define LTN_INSTANTIATE(dim)                                         \
-  template void record_errors(const ErrorNorms *,                    \
-                              const DoFHandler<dim> *,               \
-                              const TrilinosWrappers::MPI::Vector &, \
-                              const Function<dim> &,                 \
-                              const NonlocalRegion<dim> &,           \
-                              double,                                \
-                              LevelRecord &);
+#define LTN_INSTANTIATE(dim)                                                     \
+  template void             record_errors(const ErrorNorms *,                    \
+                                          const DoFHandler<dim> *,               \
+                                          const TrilinosWrappers::MPI::Vector &, \
+                                          const Function<dim> &,                 \
+                                          const NonlocalRegion<dim> &,           \
+                                          double,                                \
+                                          LevelRecord &);                        \
+  template CouplingSolution solve_level(const DiscreteModel *,                   \
+                                        const DiscreteModel *,                   \
+                                        const OverlapQuadrature<dim> &,          \
+                                        const CouplingParameters &,              \
+                                        LevelRecord &,                           \
+                                        Progress &);
   LTN_INSTANTIATE(1)
   LTN_INSTANTIATE(2)
   LTN_INSTANTIATE(3)
 #undef LTN_INSTANTIATE
-
-  template CouplingSolution
-  solve_level(const DiscreteModel *,
-              const DiscreteModel *,
-              const OverlapQuadrature<1> &,
-              const CouplingParameters &,
-              LevelRecord &,
-              Progress &);
-  template CouplingSolution
-  solve_level(const DiscreteModel *,
-              const DiscreteModel *,
-              const OverlapQuadrature<2> &,
-              const CouplingParameters &,
-              LevelRecord &,
-              Progress &);
-  template CouplingSolution
-  solve_level(const DiscreteModel *,
-              const DiscreteModel *,
-              const OverlapQuadrature<3> &,
-              const CouplingParameters &,
-              LevelRecord &,
-              Progress &);
 } // namespace ltn

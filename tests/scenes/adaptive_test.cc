@@ -12,7 +12,7 @@ TEST_CASE("patch tests on adaptively refined local meshes", "[adaptive]")
   const std::vector<std::pair<std::string, std::vector<std::string>>> scenes = {
     {"diffusion_2d_patch",
      {"Local model/Adaptive refinement cycles=3",
-      "Problem data/Exact solution=x + 2*y + x*y"}},
+      "Diffusion data/Exact solution=x + 2*y + x*y"}},
     {"diffusion_1d_patch", {"Local model/Adaptive refinement cycles=3"}}};
   for (const auto &[scene, sets] : scenes)
     {

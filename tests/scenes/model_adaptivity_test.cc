@@ -138,12 +138,12 @@ TEST_CASE("auto regions without cracks start from the local model alone",
                "Geometry/Overlap width=0.125",
                "Geometry/Model error tolerance=1e-2",
                "Discretization/Number of levels=1",
-               "Problem data/Exact solution=",
-               "Problem data/Plane wave number=0",
-               "Problem data/Nonlocal right-hand side=" + source,
-               "Problem data/Local right-hand side=" + source,
-               "Problem data/Boundary data=0",
-               "Problem data/Volume constraint data=0",
+               "Diffusion data/Exact solution=",
+               "Diffusion data/Plane wave number=0",
+               "Diffusion data/Nonlocal right-hand side=" + source,
+               "Diffusion data/Local right-hand side=" + source,
+               "Diffusion data/Boundary data=0",
+               "Diffusion data/Volume constraint data=0",
                "Postprocess/True model error=true"});
   const ltn::ModelAdaptivityRecord &loop = run.summary.model_adaptivity;
   REQUIRE(loop.cycles.size() == 3);

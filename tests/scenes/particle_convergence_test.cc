@@ -50,7 +50,7 @@ TEST_CASE("3D asymptotic compatibility with eps = 2 h",
 {
   const SceneRun run = run_scene("diffusion_3d_convergence",
                                  {"Nonlocal model/Horizon to mesh size ratio=2",
-                                  "Problem data/Nonlocal right-hand side="
+                                  "Diffusion data/Nonlocal right-hand side="
                                   "3*pi^2*sin(pi*x)*cos(pi*y)*cos(pi*z)",
                                   "Discretization/Mesh size=0.25",
                                   "Discretization/Number of levels=3"});

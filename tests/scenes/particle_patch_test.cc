@@ -16,9 +16,9 @@ namespace
     "Local model/Finite element degree=2",
     "Nonlocal model/Particle spacing to mesh size ratio=0.5",
     "Nonlocal model/Horizon to mesh size ratio=1.5",
-    "Problem data/Exact solution=x^2 + y*z - z^2 + 2*y",
-    "Problem data/Nonlocal right-hand side=0",
-    "Problem data/Local right-hand side=0"};
+    "Diffusion data/Exact solution=x^2 + y*z - z^2 + 2*y",
+    "Diffusion data/Nonlocal right-hand side=0",
+    "Diffusion data/Local right-hand side=0"};
 
   /**
    * Patch test with both methods (or @p methods); @p max_u normalizes the
@@ -216,8 +216,8 @@ TEST_CASE("a crack in one arm of a T: rigid motions to round-off",
   check_patch("lps_plate_2d_quadratic_patch",
               {lps_2d_union,
                "Cracks/Corners=1, 0.4, 1, 0.7",
-               "Problem data/Exact solution=1e-5*(1 - y); 1e-5*(2 + x)",
-               "Problem data/Body force=0; 0"},
+               "Elasticity data/Exact solution=1e-5*(1 - y); 1e-5*(2 + x)",
+               "Elasticity data/Body force=0; 0"},
               4e-5);
 }
 

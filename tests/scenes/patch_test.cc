@@ -61,9 +61,9 @@ TEST_CASE("quadratic patch test with P2 on both sides", "[patch]")
       check_patch({"Nonlocal model/Kernel=" + kernel,
                    "Nonlocal model/Finite element degree=2",
                    "Local model/Finite element degree=2",
-                   "Problem data/Exact solution=x^2",
-                   "Problem data/Nonlocal right-hand side=-2",
-                   "Problem data/Local right-hand side=-2",
+                   "Diffusion data/Exact solution=x^2",
+                   "Diffusion data/Nonlocal right-hand side=-2",
+                   "Diffusion data/Local right-hand side=-2",
                    "Discretization/Number of levels=2"},
                   1.75 * 1.75);
     }
@@ -74,15 +74,15 @@ TEST_CASE("quadratic patch test with P2 on both sides", "[patch]")
 TEST_CASE("patch tests with a Neumann condition on the local side", "[patch]")
 {
   check_patch({"Local model/Dirichlet boundaries=x-",
-               "Problem data/Boundary gradient=1"},
+               "Diffusion data/Boundary gradient=1"},
               1.75);
   check_patch({"Local model/Dirichlet boundaries=x-",
                "Nonlocal model/Finite element degree=2",
                "Local model/Finite element degree=2",
-               "Problem data/Exact solution=x^2",
-               "Problem data/Nonlocal right-hand side=-2",
-               "Problem data/Local right-hand side=-2",
-               "Problem data/Boundary gradient=2*x"},
+               "Diffusion data/Exact solution=x^2",
+               "Diffusion data/Nonlocal right-hand side=-2",
+               "Diffusion data/Local right-hand side=-2",
+               "Diffusion data/Boundary gradient=2*x"},
               1.75 * 1.75);
 }
 
@@ -93,8 +93,8 @@ TEST_CASE("P1 does not contain x^2 so its error is that of P1", "[patch]")
   // A control on the test above: with P1 on both sides x^2 is not
   // reproduced, so the patch test is not passing for a trivial reason.
   const SceneRun run = run_scene("diffusion_1d_patch",
-                                 {"Problem data/Exact solution=x^2",
-                                  "Problem data/Nonlocal right-hand side=-2",
-                                  "Problem data/Local right-hand side=-2"});
+                                 {"Diffusion data/Exact solution=x^2",
+                                  "Diffusion data/Nonlocal right-hand side=-2",
+                                  "Diffusion data/Local right-hand side=-2"});
   CHECK(run.summary.levels.back().coupled_errors.linf > 1e-6);
 }

@@ -22,9 +22,9 @@
 inline const std::vector<std::string> quadratic_2d_patch = {
   "Local model/Finite element degree=2",
   "Nonlocal model/Particle spacing to mesh size ratio=0.5",
-  "Problem data/Exact solution=x^2 + x*y - 0.5*y^2 + x",
-  "Problem data/Nonlocal right-hand side=-1",
-  "Problem data/Local right-hand side=-1"};
+  "Diffusion data/Exact solution=x^2 + x*y - 0.5*y^2 + x",
+  "Diffusion data/Nonlocal right-hand side=-1",
+  "Diffusion data/Local right-hand side=-1"};
 
 struct SceneRun
 {

@@ -7,6 +7,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <ltn/base/model_lattice.h>
+
 #include <array>
 #include <memory>
 #include <utility>
@@ -135,69 +137,15 @@ namespace ltn
     std::vector<std::array<double, 3>> control_positions;
     std::vector<unsigned int>          control_components;
     /**
-     * Per owned node of a particle model, whose degrees of freedom are
-     * numbered `node_dofs * node + c` in the order of `owned`: where it sits
-     * (unused coordinates 0). Empty for models not numbered by nodes. The
-     * reduced-space CG extends the smooth fields of its coarse space from the
-     * controls to every node there, as the initial guesses of their states:
-     * a field the model reproduces (a rigid motion, and away from cracks a
-     * linear one) then needs few iterations or none (doc/discretization.md,
-     * 'A coarse level for the controls').
-     */
-    std::vector<std::array<double, 3>> node_positions;
-
-    /**
-     * @name What an iterative solver of the model needs besides `M`.
+     * @name The structure of `M` that the model's solvers exploit.
      */
     /** @{ */
     /**
-     * A sparse matrix close to `M` (spectrally) for algebraic multigrid, or
-     * empty (AMG then works on `matrix`). Its rows are the model's nodes
-     * (particles), whose `node_dofs` degrees of freedom are numbered
-     * `node_dofs * node + c`: one scalar operator standing in for `M` in
-     * each of the first `surrogate_components` components, which the
-     * surrogate does not couple (a vector Laplacian); the other components
-     * are `eliminated`.
+     * A particle model's lattice: its nodes and the surrogate that
+     * multigrid and the control preconditioners build from it on demand;
+     * null for models not numbered by nodes (the FEM models).
      */
-    TrilinosWrappers::SparseMatrix surrogate;
-    /**
-     * The surrogate's coupling to the collar, `C`: per row of `surrogate`,
-     * the weight of each bond it drops to a particle of the collar, in the
-     * column of that particle (node; columns partitioned like the owned
-     * nodes). For values `y` on the collar, `surrogate v = C y` gives their
-     * discrete harmonic extension into `Omega_n`, which the preconditioner
-     * of the nonlocal controls' Hessian block observes
-     * (SurrogateHessianBlock). Empty without a surrogate.
-     */
-    TrilinosWrappers::SparseMatrix surrogate_collar;
-    /**
-     * The node of each of this rank's rows of `surrogate`, as its place
-     * among the owned nodes. The surrogate's rows may be only some of the
-     * nodes (a particle model's free ones: the collar's rows are identities
-     * the multigrid need not carry); at the others the preconditioner is
-     * the identity.
-     */
-    std::vector<unsigned int> surrogate_nodes;
-    /**
-     * The weight of the surrogate's inverse diagonal that the preconditioner
-     * adds to its multigrid cycle (doc/discretization.md, 'Iterative model
-     * solvers'): the
-     * surrogate stands in for `M` at long wavelengths, its diagonal at short
-     * ones, where a nonlocal operator is nearly diagonal. Zero without a
-     * surrogate.
-     */
-    double       short_wave_weight    = 0;
-    unsigned int node_dofs            = 1;
-    unsigned int surrogate_components = 1;
-    /**
-     * The most rows the surrogate's multigrid hierarchy leaves on its
-     * coarsest level, which it solves directly (doc/discretization.md,
-     * 'Iterative model solvers'): the coarse levels of a 3D lattice are
-     * dense enough that
-     * a direct solve of thousands of rows costs as much as the finest
-     * level's smoothing; a 2D lattice's are not.
-     */
-    unsigned int surrogate_coarsest_rows = 200;
+    std::shared_ptr<const ModelLattice> lattice;
     /**
      * The owned degrees of freedom whose block of `M` is diagonal and
      * which a preconditioner eliminates first (the dilatation of LPS).
@@ -259,7 +207,10 @@ namespace ltn
     rows_near(const TrilinosWrappers::MPI::Vector &marked,
               const unsigned int                   layers) const;
 
-    /** Bytes this rank holds for `M`, the surrogate and the right side. */
+    /**
+     * Bytes this rank holds for `M`, the right side and the lattice's
+     * surrogate (once built).
+     */
     std::size_t
     memory_consumption() const;
 
@@ -295,19 +246,6 @@ namespace ltn
           control_positions.push_back(padded<dim>(position_of(i)));
           control_components.push_back(component_of(i));
         }
-    }
-
-    /**
-     * Fill `node_positions` from @p position_of, a function of an owned
-     * node of @p owned_nodes.
-     */
-    template <int dim, typename PositionOf>
-    void
-    locate_nodes(const IndexSet &owned_nodes, const PositionOf &position_of)
-    {
-      node_positions.clear();
-      for (const auto n : owned_nodes)
-        node_positions.push_back(padded<dim>(position_of(n)));
     }
 
     /** @p x with its unused coordinates 0. */

@@ -7,19 +7,48 @@
 #include <ltn/model_solvers/component_v_cycle.h>
 #include <ltn/model_solvers/stencil_matrix.h>
 
+#include <array>
 #include <memory>
 
 namespace ltn
 {
   using namespace dealii;
 
+  /** The tuning of ModelPreconditioner on a lattice surrogate. */
+  struct SurrogateMultigridSettings
+  {
+    /**
+     * The weight of the lattice surrogate's inverse diagonal that the
+     * preconditioner adds to its multigrid cycle, over the ratio of the
+     * long-wave moduli (LatticeSurrogate::long_wave_ratio;
+     * doc/discretization.md, 'Iterative model solvers'): the two terms
+     * overlap at wavelengths between `h` and `eps`, hence less than 1; one
+     * value serves 2D diffusion (`eps = 3h`), 2D LPS with a crack and the 3D
+     * cracked bar (`eps = 2h`) alike.
+     */
+    double short_wave_factor = 0.6;
+    /**
+     * The most rows the surrogate's multigrid hierarchy leaves on its
+     * coarsest level, which it solves directly, on a 2D and on a 3D lattice
+     * (doc/discretization.md, 'Iterative model solvers', "The hierarchy's
+     * size"): the coarse levels of a 3D lattice are dense enough that a
+     * direct solve of a thousand rows or more costs as much as the finest
+     * level's smoothing; a 2D lattice's stay sparse, so that a larger
+     * coarsest level saves iterations at little cost.
+     */
+    std::array<unsigned int, 2> coarsest_rows = {{2000, 200}};
+  };
+
+
+
   /**
    * The preconditioner of a model's iterative solver (doc/discretization.md,
    * 'Iterative model solvers'): algebraic multigrid (Trilinos ML, one
    * V-cycle) on the
    * model's matrix, or on its scalar surrogate, one V-cycle per component
-   * the surrogate stands in for, plus `DiscreteModel::short_wave_weight`
-   * times the surrogate's inverse diagonal. Where the model eliminates degrees
+   * the surrogate stands in for, plus a weight
+   * (SurrogateMultigridSettings::short_wave_factor) times the surrogate's
+   * inverse diagonal. Where the model eliminates degrees
    * of freedom (SchurComplement) it stands in for the inverse of the Schur
    * complement, and is the identity at the eliminated ones. The same
    * hierarchy serves `M` and `M^T`.
@@ -32,8 +61,10 @@ namespace ltn
      * degrees of freedom), vmult_subset() works on vectors of those entries
      * only; a subset needs the model's lattice surrogate.
      */
-    explicit ModelPreconditioner(const DiscreteModel             &model,
-                                 const std::vector<unsigned int> &subset = {});
+    explicit ModelPreconditioner(
+      const DiscreteModel              &model,
+      const std::vector<unsigned int>  &subset   = {},
+      const SurrogateMultigridSettings &settings = {});
 
     void
     vmult(TrilinosWrappers::MPI::Vector       &dst,
@@ -60,7 +91,7 @@ namespace ltn
     const bool         on_surrogate;
     const unsigned int node_dofs;
     const unsigned int surrogate_components;
-    /** DiscreteModel::surrogate_nodes. */
+    /** LatticeSurrogate::nodes. */
     const std::vector<unsigned int> nodes;
     /**
      * The model's matrix with identity rows at its constrained degrees of
@@ -84,7 +115,9 @@ namespace ltn
      * interleaved gather and scatter pass over a vector once.
      */
     std::unique_ptr<Epetra_MultiVector> node_in, node_out;
-    /** `short_wave_weight` over the surrogate's diagonal, per owned row. */
+    /**
+     * The short-wave weight over the surrogate's diagonal, per owned row.
+     */
     std::vector<double> short_wave_scaling;
     /** The subset of the constructor. */
     std::vector<unsigned int> subset;

@@ -70,6 +70,8 @@ namespace ltn
      */
     double       relative_tolerance = 1e-12;
     unsigned int max_iterations     = 1000;
+    /** The preconditioner's multigrid on a lattice surrogate. */
+    SurrogateMultigridSettings multigrid;
     /**
      * Factorize the local (finite element) model however the particle model
      * is solved: its mesh is coarse wherever the coupling is used, and a

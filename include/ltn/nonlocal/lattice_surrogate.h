@@ -1,9 +1,10 @@
 #pragma once
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
-#include <ltn/base/discrete_model.h>
+#include <ltn/base/model_lattice.h>
 #include <ltn/nonlocal/particle_lattice.h>
 
 #include <functional>
@@ -25,7 +26,7 @@ namespace ltn
    * no crack cuts (@p is_cut); neighbours in the collar enter as zero
    * values (the model fixes them by identity rows), so `L` is symmetric.
    * Its rows and columns are the particles of `Omega_n` alone
-   * (`model.surrogate_nodes`): the preconditioner is the identity on the
+   * (`LatticeSurrogate::nodes`): the preconditioner is the identity on the
    * collar, whose rows of the model are identities. At fixed `eps / h` the
    * model's operator is spectrally equivalent to `L` in each of its first
    * @p n_field_components components (the displacement; the rest, the
@@ -38,12 +39,12 @@ namespace ltn
    * `L` to `diagonal h^2 / (2 dim)` times it. At short wavelengths, where
    * `L` keeps growing, a nonlocal operator levels off at its diagonal. The
    * preconditioner therefore adds the inverse of `L`'s diagonal, weighted
-   * by `model.short_wave_weight` = 0.6 times the ratio of the two long-wave
-   * moduli, to its cycle on `L` (doc/discretization.md, 'Iterative model
-   * solvers').
+   * by a factor (ModelSolverSettings::short_wave_factor) times the ratio of
+   * the two long-wave moduli (`LatticeSurrogate::long_wave_ratio`), to its
+   * cycle on `L` (doc/discretization.md, 'Iterative model solvers').
    *
    * The same bonds from particles of `Omega_n` to particles of the collar
-   * make the coupling `C` (`model.surrogate_collar`): for values `y` on the
+   * make the coupling `C` (`LatticeSurrogate::collar`): for values `y` on the
    * collar, `L v = C y` gives their discrete harmonic extension `v` into
    * `Omega_n` (doc/discretization.md, 'A surrogate model of the nonlocal
    * control block'). The model's stencil
@@ -52,23 +53,20 @@ namespace ltn
    * with the weight `collar_trace[m - 1]` (collar_trace_weights()), so that
    * `C` extends them as the model would.
    *
-   * Fills `model.surrogate`, `model.surrogate_collar` and
-   * `model.surrogate_nodes` over this rank's
-   * @p owned_particles, one row per particle of `Omega_n`,
-   * `model.short_wave_weight`, and `model.node_dofs` (@p n_components
-   * degrees of freedom per particle) and `model.surrogate_components`.
+   * Fills @p surrogate over this rank's @p owned_particles, one row per
+   * particle of `Omega_n`, distributed over @p communicator.
    */
   template <int dim>
   void
   assemble_lattice_surrogate(
     const ParticleLattice<dim> &lattice,
     const IndexSet             &owned_particles,
-    const unsigned int          n_components,
     const unsigned int          n_field_components,
     const double                diagonal,
     const double                long_wave_modulus,
     const std::vector<double>  &collar_trace,
     const double                spacing,
     const std::function<bool(const Point<dim> &, const Point<dim> &)> &is_cut,
-    DiscreteModel                                                     &model);
+    const MPI_Comm    communicator,
+    LatticeSurrogate &surrogate);
 } // namespace ltn

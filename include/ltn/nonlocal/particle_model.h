@@ -13,6 +13,7 @@
 #include <ltn/nonlocal/particle_lattice.h>
 #include <ltn/problem/geometry.h>
 
+#include <functional>
 #include <vector>
 
 namespace ltn
@@ -107,6 +108,19 @@ namespace ltn
      */
     void
     assemble_load(const Function<dim> &load, const Function<dim> &volume_data);
+
+    /**
+     * `model.lattice`: this rank's particles as nodes, and their lattice
+     * surrogate (assemble_lattice_surrogate()) with the physics' @p diagonal,
+     * @p long_wave_modulus, @p collar_trace and @p is_cut, built when a
+     * solver first asks for it.
+     */
+    void
+    offer_lattice(
+      const double               diagonal,
+      const double               long_wave_modulus,
+      const std::vector<double> &collar_trace,
+      std::function<bool(const Point<dim> &, const Point<dim> &)> is_cut);
 
     const Geometry<dim>       &geometry;
     const double               spacing;

@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ltn/base/expression.h>
+#include <ltn/problem/data_entries.h>
 #include <ltn/problem/material.h>
 
 #include <memory>
@@ -13,7 +14,7 @@ namespace ltn
   using namespace dealii;
 
   /**
-   * The data of an elasticity scene (subsection `Problem data`), as text
+   * The data of an elasticity scene (subsection `Elasticity data`), as text
    * expressions of `dim` components separated by `;` (the pressure has one):
    * the body force of both models, Dirichlet data of the local model, the
    * volume constraint of the nonlocal one, the traction and pressure on the
@@ -22,25 +23,22 @@ namespace ltn
    * of the level: `E`, `nu`, `lambda` and `mu` (the Lamé constants of the
    * dimension: plane stress has its own lambda), `eps`, `h`, and `pi`.
    */
-  struct ElasticityData
+  struct ElasticityData : SolutionData
   {
-    /**
-     * Declare the entries only elasticity uses; `Exact solution`,
-     * `Boundary data` and `Volume constraint data` are ProblemData's.
-     */
+    ElasticityData();
+
+    /** Declare the subsection `Elasticity data`. */
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /**
-     * Read the expressions; an InputError names a parameter of diffusion
-     * scenes that is set in an elasticity scene.
-     */
+    /** Read the expressions. */
     void
     parse_parameters(ParameterHandler &prm);
 
     /**
-     * An InputError names the first elasticity-only parameter (of `Problem
-     * data`, `Material`, `Cracks` or `Postprocess`) that a diffusion scene
+     * An InputError names the first elasticity-only parameter (of
+     * `Elasticity data`, `Material`, `Cracks` or `Postprocess`) that a
+     * diffusion scene
      * sets to other than its default.
      */
     static void
@@ -68,10 +66,7 @@ namespace ltn
               const double    horizon,
               const double    h) const;
 
-    std::string exact_solution;
     std::string body_force;
-    std::string boundary_data;
-    std::string volume_constraint_data;
     std::string traction;
     std::string pressure;
   };

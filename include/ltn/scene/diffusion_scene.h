@@ -3,7 +3,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <ltn/problem/problem_data.h>
+#include <ltn/problem/diffusion_data.h>
 #include <ltn/scene/scene.h>
 
 #include <string>
@@ -43,6 +43,6 @@ namespace ltn
     using Scene<dim>::discretization;
     using Scene<dim>::coupling_parameters;
 
-    ProblemData problem_data;
+    DiffusionData problem_data;
   };
 } // namespace ltn

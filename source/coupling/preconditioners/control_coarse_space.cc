@@ -176,8 +176,7 @@ namespace ltn
                                              model.control_components.end()),
           communicator);
         const bool extended =
-          Utilities::MPI::min(model.node_positions.empty() ? 0u : 1u,
-                              communicator) > 0;
+          Utilities::MPI::min(model.lattice ? 1u : 0u, communicator) > 0;
 
         const auto monomial =
           [&](const std::array<double, 3>       &p,
@@ -270,18 +269,19 @@ namespace ltn
             Z[j].extension = model.new_vector();
             // A node's entries lie at node_dofs * node + c in the order of
             // `owned`.
-            double *entries = Z[j].extension.begin();
-            for (std::size_t n = 0; n < model.node_positions.size(); ++n)
+            double             *entries = Z[j].extension.begin();
+            const ModelLattice &lattice = *model.lattice;
+            for (std::size_t n = 0; n < lattice.node_positions.size(); ++n)
               {
                 for (std::size_t m = 0; m < n_monomials; ++m)
                   monomial_values[m] =
-                    monomial(model.node_positions[n], exponents[m]);
+                    monomial(lattice.node_positions[n], exponents[m]);
                 for (unsigned int c = 0; c < n_components; ++c)
                   {
                     double value = 0;
                     for (std::size_t m = 0; m < n_monomials; ++m)
                       value += column[c * n_monomials + m] * monomial_values[m];
-                    entries[model.node_dofs * n + c] = value;
+                    entries[lattice.node_dofs * n + c] = value;
                   }
               }
           }

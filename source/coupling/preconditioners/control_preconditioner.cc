@@ -11,31 +11,31 @@ namespace ltn
     /**
      * Per nonlocal control `i`, `c_i / max_j c_j`: `c_i` the weight of the
      * bonds of its particle into `Omega_n` in the lattice surrogate, the
-     * column sum of `C` (DiscreteModel::surrogate_collar), the same for
-     * each component of a particle.
+     * column sum of `C` (LatticeSurrogate::collar), the same for each
+     * component of a particle.
      */
     TrilinosWrappers::MPI::Vector
     collar_reach(const DiscreteModel &model, const ModelSolver &solver)
     {
-      AssertThrow(model.surrogate_collar.m() > 0,
+      AssertThrow(model.lattice,
                   ExcMessage("Coupling/Collar layer weight needs a particle "
                              "model's lattice surrogate (2D or 3D)"));
-      TrilinosWrappers::MPI::Vector ones(
-        model.surrogate_collar.locally_owned_range_indices(),
-        model.communicator);
+      const TrilinosWrappers::SparseMatrix &collar =
+        model.lattice->surrogate().collar;
+      const unsigned int            node_dofs = model.lattice->node_dofs;
+      TrilinosWrappers::MPI::Vector ones(collar.locally_owned_range_indices(),
+                                         model.communicator);
       ones = 1.;
       TrilinosWrappers::MPI::Vector column_sums(
-        model.surrogate_collar.locally_owned_domain_indices(),
-        model.communicator);
-      model.surrogate_collar.Tvmult(column_sums, ones);
+        collar.locally_owned_domain_indices(), model.communicator);
+      collar.Tvmult(column_sums, ones);
       // The columns are partitioned like the owned nodes, whose degrees of
       // freedom are node_dofs * node + c.
       TrilinosWrappers::MPI::Vector at_dofs = model.new_vector();
       for (std::size_t node = 0; node < column_sums.locally_owned_size();
            ++node)
-        for (unsigned int c = 0; c < model.node_dofs; ++c)
-          at_dofs.begin()[model.node_dofs * node + c] =
-            column_sums.begin()[node];
+        for (unsigned int c = 0; c < node_dofs; ++c)
+          at_dofs.begin()[node_dofs * node + c] = column_sums.begin()[node];
       TrilinosWrappers::MPI::Vector reach =
         solver.restrict_to_controls(at_dofs);
       const double largest = reach.linfty_norm();

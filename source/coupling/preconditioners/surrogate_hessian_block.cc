@@ -24,6 +24,17 @@ namespace ltn
       types::global_dof_index n_controls = 0;
       types::global_dof_index begin      = 0;
     };
+
+    /** The lattice of a particle model. */
+    const ModelLattice &
+    lattice_of(const DiscreteModel &model)
+    {
+      AssertThrow(model.lattice,
+                  ExcMessage("the surrogate model of the nonlocal controls' "
+                             "Hessian block needs a particle model's lattice "
+                             "surrogate (2D or 3D)"));
+      return *model.lattice;
+    }
   } // namespace
 
 
@@ -34,20 +45,18 @@ namespace ltn
     const TrilinosWrappers::MPI::Vector &diagonal,
     const TrilinosWrappers::MPI::Vector &observation)
     : model(model)
+    , lattice(lattice_of(model))
+    , surrogate(lattice.surrogate())
     , solver(solver)
     , diagonal(diagonal)
   {
-    AssertThrow(model.surrogate.m() > 0 && model.surrogate_collar.m() > 0,
-                ExcMessage("the surrogate model of the nonlocal controls' "
-                           "Hessian block needs a particle model's lattice "
-                           "surrogate (2D or 3D)"));
-    const IndexSet &rows = model.surrogate.locally_owned_range_indices();
-    for (unsigned int c = 0; c < model.surrogate_components; ++c)
+    const IndexSet &rows = surrogate.matrix.locally_owned_range_indices();
+    for (unsigned int c = 0; c < surrogate.components; ++c)
       {
         weights.emplace_back(rows, model.communicator);
-        for (std::size_t i = 0; i < model.surrogate_nodes.size(); ++i)
+        for (std::size_t i = 0; i < surrogate.nodes.size(); ++i)
           weights[c].begin()[i] =
-            observation.begin()[model.node_dofs * model.surrogate_nodes[i] + c];
+            observation.begin()[lattice.node_dofs * surrogate.nodes[i] + c];
       }
     assemble_saddle_point();
     // Symmetric indefinite, LDL^T with 2x2 pivots: on the 3D diffusion
@@ -76,8 +85,8 @@ namespace ltn
   SurrogateHessianBlock::assemble_saddle_point()
   {
     const MPI_Comm     communicator = model.communicator;
-    const unsigned int n_components = model.surrogate_components;
-    const IndexSet    &rows = model.surrogate.locally_owned_range_indices();
+    const unsigned int n_components = surrogate.components;
+    const IndexSet    &rows = surrogate.matrix.locally_owned_range_indices();
     RankLayout         mine;
     mine.first_row     = rows.n_elements() > 0 ? *rows.begin() : 0;
     mine.n_rows        = rows.n_elements();
@@ -115,13 +124,13 @@ namespace ltn
     const auto control_of = [&](const types::global_dof_index particle,
                                 const unsigned int            c) {
       return static_cast<types::global_dof_index>(
-        control_unknown(model.node_dofs * particle + c));
+        control_unknown(lattice.node_dofs * particle + c));
     };
 
     // Rows: this rank's, and those of the controls its rows of C reach.
     IndexSet touched = saddle_point_owned;
     for (const auto g : rows)
-      for_each_in_row(model.surrogate_collar,
+      for_each_in_row(surrogate.collar,
                       g,
                       [&](const auto particle, const double) {
                         for (unsigned int c = 0; c < n_components; ++c)
@@ -143,13 +152,13 @@ namespace ltn
             const auto l = field_unknown(g, c, true);
             enter(v, v, weights[c].begin()[r]);
             // L is symmetric.
-            for_each_in_row(model.surrogate,
+            for_each_in_row(surrogate.matrix,
                             g,
                             [&](const auto column, const double value) {
                               enter(v, field_unknown(column, c, true), value);
                               enter(l, field_unknown(column, c, false), value);
                             });
-            for_each_in_row(model.surrogate_collar,
+            for_each_in_row(surrogate.collar,
                             g,
                             [&](const auto particle, const double value) {
                               if (const auto y = control_of(particle, c); y > 0)
@@ -178,28 +187,27 @@ namespace ltn
                                const TrilinosWrappers::MPI::Vector &src) const
   {
     if (!surrogate_solver)
-      surrogate_solver = std::make_unique<DirectSolver>(model.surrogate);
+      surrogate_solver = std::make_unique<DirectSolver>(surrogate.matrix);
     TrilinosWrappers::MPI::Vector node_values(
-      model.surrogate_collar.locally_owned_domain_indices(),
-      model.communicator);
+      surrogate.collar.locally_owned_domain_indices(), model.communicator);
     TrilinosWrappers::MPI::Vector row_values(
-      model.surrogate.locally_owned_range_indices(), model.communicator);
+      surrogate.matrix.locally_owned_range_indices(), model.communicator);
     TrilinosWrappers::MPI::Vector row_solution(row_values);
     // Over the model's degrees of freedom, numbered node_dofs * node + c.
     const TrilinosWrappers::MPI::Vector values   = solver.extend_controls(src);
     TrilinosWrappers::MPI::Vector       gradient = model.new_vector();
     const std::size_t n_nodes = node_values.locally_owned_size();
-    for (unsigned int c = 0; c < model.surrogate_components; ++c)
+    for (unsigned int c = 0; c < surrogate.components; ++c)
       {
         for (std::size_t n = 0; n < n_nodes; ++n)
-          node_values.begin()[n] = values.begin()[model.node_dofs * n + c];
-        model.surrogate_collar.vmult(row_values, node_values);
+          node_values.begin()[n] = values.begin()[lattice.node_dofs * n + c];
+        surrogate.collar.vmult(row_values, node_values);
         surrogate_solver->solve(row_solution, row_values);
         row_solution.scale(weights[c]);
         surrogate_solver->solve(row_values, row_solution);
-        model.surrogate_collar.Tvmult(node_values, row_values);
+        surrogate.collar.Tvmult(node_values, row_values);
         for (std::size_t n = 0; n < n_nodes; ++n)
-          gradient.begin()[model.node_dofs * n + c] = node_values.begin()[n];
+          gradient.begin()[lattice.node_dofs * n + c] = node_values.begin()[n];
       }
     dst = solver.restrict_to_controls(gradient);
     for (std::size_t i = 0; i < dst.locally_owned_size(); ++i)

@@ -338,28 +338,17 @@ namespace ltn
     return solution;
   }
 
-  template CouplingSolution
-  solve_reduced_space_cg(const CouplingSystem<1> &,
-                         double,
-                         unsigned int,
-                         const ModelSolverSettings &,
-                         const ControlPreconditionerSettings &,
-                         bool,
-                         Progress &);
-  template CouplingSolution
-  solve_reduced_space_cg(const CouplingSystem<2> &,
-                         double,
-                         unsigned int,
-                         const ModelSolverSettings &,
-                         const ControlPreconditionerSettings &,
-                         bool,
-                         Progress &);
-  template CouplingSolution
-  solve_reduced_space_cg(const CouplingSystem<3> &,
-                         double,
-                         unsigned int,
-                         const ModelSolverSettings &,
-                         const ControlPreconditionerSettings &,
-                         bool,
-                         Progress &);
+#define LTN_INSTANTIATE(dim)                        \
+  template CouplingSolution solve_reduced_space_cg( \
+    const CouplingSystem<dim> &,                    \
+    double,                                         \
+    unsigned int,                                   \
+    const ModelSolverSettings &,                    \
+    const ControlPreconditionerSettings &,          \
+    bool,                                           \
+    Progress &);
+  LTN_INSTANTIATE(1)
+  LTN_INSTANTIATE(2)
+  LTN_INSTANTIATE(3)
+#undef LTN_INSTANTIATE
 } // namespace ltn

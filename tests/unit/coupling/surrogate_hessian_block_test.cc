@@ -26,14 +26,15 @@ namespace
   constant_defect(const DiscreteModel &model)
   {
     TrilinosWrappers::MPI::Vector ones(
-      model.surrogate_collar.locally_owned_domain_indices(),
+      model.lattice->surrogate().collar.locally_owned_domain_indices(),
       model.communicator);
     ones = 1.;
     TrilinosWrappers::MPI::Vector load(
-      model.surrogate.locally_owned_range_indices(), model.communicator);
+      model.lattice->surrogate().matrix.locally_owned_range_indices(),
+      model.communicator);
     TrilinosWrappers::MPI::Vector extension(load);
-    model.surrogate_collar.vmult(load, ones);
-    DirectSolver(model.surrogate).solve(extension, load);
+    model.lattice->surrogate().collar.vmult(load, ones);
+    DirectSolver(model.lattice->surrogate().matrix).solve(extension, load);
     extension.add(-1.);
     return extension.linfty_norm();
   }

@@ -47,7 +47,8 @@ namespace
   double
   cycle_difference(const DiscreteModel &model, const unsigned int components)
   {
-    const Epetra_CrsMatrix &matrix = model.surrogate.trilinos_matrix();
+    const Epetra_CrsMatrix &matrix =
+      model.lattice->surrogate().matrix.trilinos_matrix();
     TrilinosWrappers::PreconditionAMG amg;
     initialize(amg, matrix, 1);
     const StencilMatrix stencil(matrix);
@@ -112,7 +113,7 @@ TEST_CASE("the V-cycle on all components declines Chebyshev of degree 3",
 {
   const auto              particles = cracked_lps<3>(1. / 16, 2, true);
   const Epetra_CrsMatrix &matrix =
-    particles->get_model().surrogate.trilinos_matrix();
+    particles->get_model().lattice->surrogate().matrix.trilinos_matrix();
   TrilinosWrappers::PreconditionAMG amg;
   initialize(amg, matrix, 3);
   const StencilMatrix stencil(matrix);

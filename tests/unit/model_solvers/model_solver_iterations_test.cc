@@ -227,7 +227,7 @@ TEST_CASE("a particle model's forward solve started from a rigid motion at "
                      Functions::ZeroFunction<2>(2),
                      true);
   const DiscreteModel &model = particles.get_model();
-  REQUIRE(model.node_positions.size() * model.node_dofs ==
+  REQUIRE(model.lattice->node_positions.size() * model.lattice->node_dofs ==
           model.owned.n_elements());
 
   // u = (1 - y, x): a rotation plus a translation.
@@ -247,10 +247,10 @@ TEST_CASE("a particle model's forward solve started from a rigid motion at "
   auto                          guess = model.new_vector();
   const types::global_dof_index first_dof =
     model.owned.is_empty() ? 0 : model.owned.nth_index_in_set(0);
-  for (std::size_t n = 0; n < model.node_positions.size(); ++n)
+  for (std::size_t n = 0; n < model.lattice->node_positions.size(); ++n)
     for (unsigned int c = 0; c < 2; ++c)
-      guess(first_dof + model.node_dofs * n + c) =
-        rotation(model.node_positions[n], c);
+      guess(first_dof + model.lattice->node_dofs * n + c) =
+        rotation(model.lattice->node_positions[n], c);
   guess.compress(VectorOperation::insert);
 
   const auto from_guess = solver.forward(theta, false, &guess);

@@ -23,8 +23,9 @@ namespace
   random_surrogate_vector(const DiscreteModel &model, std::mt19937 &random)
   {
     std::uniform_real_distribution<double> value(-1, 1);
-    VectorType x(model.surrogate.locally_owned_domain_indices(),
-                 model.communicator);
+    VectorType                             x(
+      model.lattice->surrogate().matrix.locally_owned_domain_indices(),
+      model.communicator);
     for (auto &x_i : x)
       x_i = value(random);
     return x;
@@ -40,7 +41,7 @@ namespace
       {
         const VectorType x = random_surrogate_vector(model, random);
         VectorType       y(x), z(x);
-        model.surrogate.vmult(y, x);
+        model.lattice->surrogate().matrix.vmult(y, x);
         stencil.apply(x.begin(), z.begin());
         const double scale = y.linfty_norm();
         z -= y;
@@ -76,7 +77,8 @@ namespace
   void
   check(const DiscreteModel &model)
   {
-    const StencilMatrix stencil(model.surrogate.trilinos_matrix());
+    const StencilMatrix stencil(
+      model.lattice->surrogate().matrix.trilinos_matrix());
     REQUIRE(stencil.is_stencil());
     const double difference = product_difference(model, stencil);
     INFO(dim << "D: product difference " << difference);
@@ -84,11 +86,11 @@ namespace
     CHECK(stencil.memory_consumption() > 0);
 
     std::mt19937     random(3);
-    const VectorType x      = random_surrogate_vector(model, random);
-    const auto      &matrix = model.surrogate.trilinos_matrix();
-    const VectorType rows   = v_cycle(matrix, x, false);
-    VectorType       cycle  = v_cycle(matrix, x, true);
-    const double     scale  = rows.linfty_norm();
+    const VectorType x    = random_surrogate_vector(model, random);
+    const auto &matrix    = model.lattice->surrogate().matrix.trilinos_matrix();
+    const VectorType rows = v_cycle(matrix, x, false);
+    VectorType       cycle = v_cycle(matrix, x, true);
+    const double     scale = rows.linfty_norm();
     cycle -= rows;
     INFO(dim << "D: V-cycle difference " << cycle.linfty_norm() / scale);
     CHECK(cycle.linfty_norm() < 1e-12 * scale);
@@ -112,7 +114,7 @@ TEST_CASE("a matrix whose off-diagonal entries differ is no stencil",
 {
   const auto           particles = cracked_lps<2>(1. / 32, 2, true);
   const DiscreteModel &model     = particles->get_model();
-  Epetra_CrsMatrix     changed(model.surrogate.trilinos_matrix());
+  Epetra_CrsMatrix changed(model.lattice->surrogate().matrix.trilinos_matrix());
   // One off-diagonal entry of rank 0's first row halved.
   if (Utilities::MPI::this_mpi_process(model.communicator) == 0)
     {
@@ -128,5 +130,6 @@ TEST_CASE("a matrix whose off-diagonal entries differ is no stencil",
           }
     }
   CHECK_FALSE(StencilMatrix(changed).is_stencil());
-  CHECK(StencilMatrix(model.surrogate.trilinos_matrix()).is_stencil());
+  CHECK(StencilMatrix(model.lattice->surrogate().matrix.trilinos_matrix())
+          .is_stencil());
 }

@@ -77,7 +77,7 @@ namespace ltn
     /**
      * The field at every degree of freedom of the model (zero at the
      * components it has no polynomial for), when the model has
-     * `DiscreteModel::node_positions`; otherwise empty.
+     * a lattice (ModelLattice::node_positions); otherwise empty.
      */
     TrilinosWrappers::MPI::Vector extension;
   };

@@ -28,8 +28,8 @@ namespace ltn
    *
    * `W_f` the observation weights of the free particles. `G` is replaced by
    * the lattice surrogate's harmonic extension, `G~ = L^{-1} C` per field
-   * component `c < surrogate_components` (`DiscreteModel::surrogate`,
-   * `surrogate_collar`), which is right for the smooth control fields that
+   * component the surrogate stands in for (LatticeSurrogate: `matrix`,
+   * `collar`), which is right for the smooth control fields that
    * `D_n` alone misses:
    *
    *   H~ = D + sum_c C_c^T L^{-1} W_c L^{-1} C_c,
@@ -80,7 +80,10 @@ namespace ltn
     void
     assemble_saddle_point();
 
-    const DiscreteModel                 &model;
+    const DiscreteModel &model;
+    /** The model's lattice and surrogate (DiscreteModel::lattice). */
+    const ModelLattice                  &lattice;
+    const LatticeSurrogate              &surrogate;
     const ModelSolver                   &solver;
     const TrilinosWrappers::MPI::Vector &diagonal;
     /** Per component, `W_c` at the surrogate's rows. */

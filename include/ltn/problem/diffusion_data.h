@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <ltn/base/expression.h>
+#include <ltn/problem/data_entries.h>
 
 #include <functional>
 #include <map>
@@ -14,7 +15,8 @@ namespace ltn
   using namespace dealii;
 
   /**
-   * The data of a scene (subsection `Problem data`), as text expressions:
+   * The data of a diffusion scene (subsection `Diffusion data`), as text
+   * expressions:
    * right-hand sides of both models, physical data, and an optional exact
    * solution. Besides `x`, `y`, `z`, every expression may use the constants
    * of the level it is evaluated on: `eps` (horizon), `h` (mesh size), `k`
@@ -23,13 +25,22 @@ namespace ltn
    * With them, `f_n = -L u` of a plane-wave solution is written exactly,
    * e.g. `-sigma*sin(k*x)`, even when the horizon changes with the level.
    */
-  struct ProblemData
+  struct DiffusionData : SolutionData
   {
+    DiffusionData();
+
     static void
     declare_parameters(ParameterHandler &prm);
 
     void
     parse_parameters(ParameterHandler &prm);
+
+    /**
+     * An InputError names the first entry of `Diffusion data` that an
+     * elasticity scene sets to other than its default.
+     */
+    static void
+    check_unused(ParameterHandler &prm);
 
     /** The functions of one level. */
     template <int dim>
@@ -57,11 +68,8 @@ namespace ltn
               const std::function<double(double)> &plane_wave_symbol,
               const double                         h) const;
 
-    std::string exact_solution;
     std::string nonlocal_rhs;
     std::string local_rhs;
-    std::string boundary_data;
-    std::string volume_constraint_data;
     std::string boundary_gradient;
     double      wave_number = 0;
   };
