@@ -33,7 +33,8 @@ from matplotlib.lines import Line2D  # noqa: E402
 from matplotlib.patches import Patch  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from vtu_fields import read_vtu  # noqa: E402
+from run_output import level_file, run_name  # noqa: E402
+from vtu_fields import read_grid, read_vtu  # noqa: E402
 
 # Region tags (doc/discretization.md, 'Geometry and region tags'), coloured
 # as in plot_fields_2d.py (tab10).
@@ -52,15 +53,6 @@ def parse_args():
     parser.add_argument("--z", type=float, default=None,
                         help="slice plane (default: the body's mid-plane)")
     return parser.parse_args()
-
-
-def read_grid(path):
-    """The unstructured grid (cells included) of the VTU/PVTU file at path."""
-    reader = (vtk.vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu")
-              else vtk.vtkXMLUnstructuredGridReader())
-    reader.SetFileName(path)
-    reader.Update()
-    return reader.GetOutput()
 
 
 def slice_grid(grid, z):
@@ -142,14 +134,13 @@ def main():
     args = parse_args()
     level = f"level-{args.level:02d}"
     for kind in ("particles", "local_mesh"):
-        path = os.path.join(args.directory, f"{kind}_{level}.pvtu")
+        path = level_file(args.directory, kind, args.level)
         if not os.path.exists(path):
             sys.exit(f"error: {path} does not exist (a 3D run with "
                      f"'Write VTU = true' and at least {args.level + 1} "
                      "levels writes it)")
-    xp, p = read_vtu(os.path.join(args.directory,
-                                  f"particles_{level}.pvtu"))
-    mesh = read_grid(os.path.join(args.directory, f"local_mesh_{level}.pvtu"))
+    xp, p = read_vtu(level_file(args.directory, "particles", args.level))
+    mesh = read_grid(level_file(args.directory, "local_mesh", args.level))
     bounds = np.array(mesh.GetBounds()).reshape(3, 2)
     for key, value in p.items():
         if not np.all(np.isfinite(value)):
@@ -229,7 +220,7 @@ def main():
     max_opening = max(openings) if openings else float("nan")
 
     summary_opening = None
-    name = os.path.basename(os.path.normpath(args.directory))
+    name = run_name(args.directory)
     summary = os.path.join(args.directory, "summary.json")
     if os.path.exists(summary):
         summary = json.load(open(summary))

@@ -15,6 +15,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_output import level_file, level_plot_arguments, run_name  # noqa: E402
 from vtu_fields import read_vtu  # noqa: E402
 
 REGIONS = ["nonlocal", "physical collar", "control collar", "overlap", "local"]
@@ -26,15 +27,10 @@ def read_sorted(path):
     order = points[:, 0].argsort()
     return points[order, 0], {k: v[order] for k, v in fields.items()}
 
-directory = sys.argv[1]
-level = int(sys.argv[2]) if len(sys.argv) > 2 else 0
-png = sys.argv[3] if len(sys.argv) > 3 else os.path.join(
-    directory, f"fields_level-{level:02d}.png")
+directory, level, png = level_plot_arguments("fields")
 
-xn, n = read_sorted(
-    os.path.join(directory, f"nonlocal_field_level-{level:02d}.pvtu"))
-xl, l = read_sorted(
-    os.path.join(directory, f"local_field_level-{level:02d}.pvtu"))
+xn, n = read_sorted(level_file(directory, "nonlocal_field", level))
+xl, l = read_sorted(level_file(directory, "local_field", level))
 
 figure, (top, middle, bottom) = plt.subplots(
     3, 1, sharex=True, figsize=(8, 7), height_ratios=[3, 2, 1])
@@ -55,7 +51,7 @@ for x, f, marker, label in ((xn, n, "o", "nonlocal mesh"),
 bottom.set_yticks(range(len(REGIONS)), REGIONS, fontsize=7)
 bottom.set_xlabel("x")
 bottom.legend(fontsize=7, loc="upper right")
-figure.suptitle(f"{os.path.basename(os.path.normpath(directory))}, level {level}")
+figure.suptitle(f"{run_name(directory)}, level {level}")
 figure.tight_layout()
 figure.savefig(png, dpi=110)
 print(f"wrote {png}")

@@ -16,17 +16,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_output import level_file, level_plot_arguments, run_name  # noqa: E402
 from vtu_fields import read_vtu  # noqa: E402
 
 
-directory = sys.argv[1]
-level = int(sys.argv[2]) if len(sys.argv) > 2 else 0
-png = sys.argv[3] if len(sys.argv) > 3 else os.path.join(
-    directory, f"fields_level-{level:02d}.png")
-xn, n = read_vtu(
-    os.path.join(directory, f"nonlocal_field_level-{level:02d}.pvtu"))
-xl, l = read_vtu(
-    os.path.join(directory, f"local_field_level-{level:02d}.pvtu"))
+directory, level, png = level_plot_arguments("fields")
+xn, n = read_vtu(level_file(directory, "nonlocal_field", level))
+xl, l = read_vtu(level_file(directory, "local_field", level))
 
 keys = [k for k in ("u", "error") if k in n]
 figure, axes = plt.subplots(1, len(keys) + 1, figsize=(5 * (len(keys) + 1), 4.2))
@@ -47,7 +43,7 @@ axis.set_title("region: 0 nonlocal (blue), 1 physical collar (orange),\n"
                "2 control collar (green), 3 overlap (red), 4 local (purple)",
                fontsize=8)
 axis.set_aspect("equal")
-figure.suptitle(f"{os.path.basename(os.path.normpath(directory))}, level {level}")
+figure.suptitle(f"{run_name(directory)}, level {level}")
 figure.tight_layout()
 figure.savefig(png, dpi=90)
 print(f"wrote {png}")

@@ -20,6 +20,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_output import level_file  # noqa: E402
 from vtu_fields import read_vtu  # noqa: E402
 
 directory = sys.argv[1]
@@ -34,8 +35,8 @@ size = loop["block_size"]
 fig, axes = plt.subplots(1, len(cycles), figsize=(4.6 * len(cycles), 4.6),
                          squeeze=False)
 for ax, cycle in zip(axes[0], cycles):
-    x, fields = read_vtu(os.path.join(
-        directory, f"model_error_level-{cycle['level_entry']:02d}.pvtu"))
+    x, fields = read_vtu(
+        level_file(directory, "model_error", cycle["level_entry"]))
     # One value per block: every point of a block carries its eta_K^2.
     blocks = {}
     for p, value in zip(x, fields["block_indicator"]):

@@ -18,20 +18,16 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from run_output import level_file, level_plot_arguments, run_name  # noqa: E402
 from vtu_fields import read_vtu  # noqa: E402
 
-directory = sys.argv[1]
-level = int(sys.argv[2]) if len(sys.argv) > 2 else 0
-png = sys.argv[3] if len(sys.argv) > 3 else os.path.join(
-    directory, f"model_error_level-{level:02d}.png")
-x, fields = read_vtu(
-    os.path.join(directory, f"model_error_level-{level:02d}.pvtu"))
+directory, level, png = level_plot_arguments("model_error")
+x, fields = read_vtu(level_file(directory, "model_error", level))
 term = fields["model_error_indicator"]
 strip = fields["boundary_layer"] > 0.5
-particles = os.path.join(directory, f"particles_level-{level:02d}.pvtu")
+particles = level_file(directory, "particles", level)
 if not os.path.exists(particles):
-    particles = os.path.join(directory,
-                             f"nonlocal_field_level-{level:02d}.pvtu")
+    particles = level_file(directory, "nonlocal_field", level)
 xn, n = read_vtu(particles)
 inside = n["region"] == 0
 
@@ -47,7 +43,7 @@ ax.scatter(xn[inside, 0], xn[inside, 1], c="white", s=1,
 fig.colorbar(shown, ax=ax,
              label="log10 of the point's term V |r|^2 / chi / c_G")
 ax.set_aspect("equal")
-ax.set_title(f"{os.path.basename(os.path.normpath(directory))}: "
+ax.set_title(f"{run_name(directory)}: "
              f"model-error indicator, level {level}", fontsize=10)
 ax.legend(loc="lower left", fontsize=7, markerscale=4)
 fig.tight_layout()

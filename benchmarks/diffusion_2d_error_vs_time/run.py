@@ -18,10 +18,13 @@ import subprocess
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
-root = os.path.dirname(os.path.dirname(here))
+sys.path.insert(0, os.path.dirname(here))
+from ltn_benchmark import REPOSITORY_ROOT, write_csv  # noqa: E402
 
+# Not ltn_argument_parser(): --out here holds results.csv and the chart too.
 parser = argparse.ArgumentParser()
-parser.add_argument("--ltn", default=os.path.join(root, "build", "ltn"))
+parser.add_argument("--ltn",
+                    default=os.path.join(REPOSITORY_ROOT, "build", "ltn"))
 parser.add_argument("--levels", type=int, default=3)
 parser.add_argument("--out", default=here)
 parser.add_argument("--quick", action="store_true")
@@ -38,7 +41,8 @@ methods = {
         "Coupling/Method=reduced space cg",
         "Coupling/Nonlocal control block=surrogate extension"],
 }
-scene = os.path.join(root, "parameter_files", "diffusion_2d_convergence.prm")
+scene = os.path.join(REPOSITORY_ROOT, "parameter_files",
+                     "diffusion_2d_convergence.prm")
 levels = 2 if args.quick else args.levels
 rows = []
 for method, settings in ({} if args.plot_only else methods).items():
@@ -74,10 +78,7 @@ if args.plot_only:
         rows = [{k: (v if k == "method" else float(v)) for k, v in r.items()}
                 for r in csv.DictReader(f)]
 else:
-    with open(csv_path, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
+    write_csv(csv_path, rows)
     print(f"wrote {csv_path}")
 for r in rows:
     print(f"{r['method']:34s} h={r['h']:<9.4g} "

@@ -14,17 +14,15 @@ error against the largest admissible region, and the effectivity). One run
 each: the ratios compare runs of one session on one machine. Writes
 results.csv and prints each row.
 """
-import argparse
-import csv
-import json
 import math
 import os
 import subprocess
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
-root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
+from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
+                           run_ltn, write_csv)
 from plate_scene import centred_plate  # noqa: E402
 
 TWO_CRACKS = ["Cracks/Corners=0.4, 0.5, 0.6, 0.5; 1.4, 1.5, 1.6, 1.5",
@@ -39,23 +37,16 @@ SCENES = {
     "bar_3d": ("lps_bar_3d_crack.prm", [], [1e-4, 6e-5, 3e-5]),
 }
 
-parser = argparse.ArgumentParser()
-parser.add_argument("--ltn", default=os.path.join(root, "build", "ltn"))
-parser.add_argument("--out", default=os.path.join(here, "runs"))
+parser = ltn_argument_parser(default_out=os.path.join(here, "runs"))
 parser.add_argument("--scenes", nargs="+", default=list(SCENES))
 parser.add_argument("--csv", default=os.path.join(here, "results.csv"))
 options = parser.parse_args()
 
 
 def run(scene, sets, name):
-    out = os.path.join(options.out, name)
-    command = [options.ltn, os.path.join(root, "parameter_files", scene),
-               "--output-dir", out, "--set", "Output/Write VTU=false"]
-    for s in sets:
-        command += ["--set", s]
-    subprocess.run(command, check=True, capture_output=True)
-    with open(os.path.join(out, "summary.json")) as f:
-        return json.load(f)
+    return run_ltn(options.ltn,
+                   os.path.join(REPOSITORY_ROOT, "parameter_files", scene),
+                   os.path.join(options.out, name), sets)
 
 
 def openings(summary):
@@ -127,8 +118,5 @@ for key in options.scenes:
                       f"{key}/auto_{tolerance:g}_checked")
         row("auto", timed, f"{tolerance:g}", checked)
 
-with open(options.csv, "w", newline="") as f:
-    writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-    writer.writeheader()
-    writer.writerows(rows)
+write_csv(options.csv, rows)
 print(f"wrote {options.csv}")

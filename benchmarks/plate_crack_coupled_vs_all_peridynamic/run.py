@@ -12,27 +12,23 @@ the whole run, the peak memory, the maximum crack opening, and the relative
 L2 difference of the opening to the all-peridynamic one and to the classical
 profile.
 """
-import argparse
-import csv
-import json
 import math
 import os
-import subprocess
 import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
-root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
+from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
+                           run_ltn, write_csv)
 from plate_scene import centred_plate  # noqa: E402
-parser = argparse.ArgumentParser()
-parser.add_argument("--ltn", default=os.path.join(root, "build", "ltn"))
-parser.add_argument("--out", default=os.path.join(here, "runs"))
+parser = ltn_argument_parser(default_out=os.path.join(here, "runs"))
 parser.add_argument("--repeat", type=int, default=3)
 parser.add_argument("--sizes", type=float, nargs="+", default=[2, 4])
 parser.add_argument("--csv", default=os.path.join(here, "results.csv"))
 options = parser.parse_args()
 
-scene = os.path.join(root, "parameter_files", "lps_plate_2d_crack.prm")
+scene = os.path.join(REPOSITORY_ROOT, "parameter_files",
+                     "lps_plate_2d_crack.prm")
 methods = {
     "all peridynamic": ["Geometry/Models=nonlocal only"],
     "coupled, full space direct": ["Coupling/Method=full space direct"],
@@ -58,12 +54,8 @@ for size in options.sizes:
                            name.replace(", ", "_").replace(" ", "_"))
         best = None
         for _ in range(options.repeat):
-            command = [options.ltn, scene, "--output-dir", out,
-                       "--set", "Output/Write VTU=false"]
-            for s in centred_plate(size) + sets:
-                command += ["--set", s]
-            subprocess.run(command, check=True, capture_output=True)
-            summary = json.load(open(os.path.join(out, "summary.json")))
+            summary = run_ltn(options.ltn, scene, out,
+                              centred_plate(size) + sets)
             if best is None or summary["timings"]["total"] < \
                     best["timings"]["total"]:
                 best = summary
@@ -90,7 +82,4 @@ for size in options.sizes:
                 f"{crack['relative_l2_difference_to_reference']:.3g}",
         })
         print(rows[-1], flush=True)
-with open(options.csv, "w", newline="") as f:
-    writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-    writer.writeheader()
-    writer.writerows(rows)
+write_csv(options.csv, rows)

@@ -20,18 +20,16 @@ missing ones are skipped (to chart a run of the 10^6 scene made apart, e.g.
 benchmarks/scaling/runs/1e6_np2 --set "Coupling/Time standalone solves=true"`,
 about two minutes on two cores, with the others).
 """
-import argparse
-import csv
 import json
 import math
 import os
 import subprocess
+import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
-root = os.path.dirname(os.path.dirname(here))
-parser = argparse.ArgumentParser()
-parser.add_argument("--ltn", default=os.path.join(root, "build", "ltn"))
-parser.add_argument("--out", default=os.path.join(here, "runs"))
+sys.path.insert(0, os.path.dirname(here))
+from ltn_benchmark import ltn_argument_parser, write_csv  # noqa: E402
+parser = ltn_argument_parser(default_out=os.path.join(here, "runs"))
 parser.add_argument("--scenes", nargs="+", default=["1e4", "3e4"])
 parser.add_argument("--ranks", type=int, nargs="+", default=[1])
 parser.add_argument("--csv", default=os.path.join(here, "results.csv"))
@@ -95,10 +93,7 @@ for ranks in options.ranks:
         })
         print(rows[-1], flush=True)
 
-with open(options.csv, "w", newline="") as f:
-    writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-    writer.writeheader()
-    writer.writerows(rows)
+write_csv(options.csv, rows)
 
 import matplotlib
 matplotlib.use("Agg")

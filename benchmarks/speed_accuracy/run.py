@@ -21,23 +21,20 @@ scene, the best coupled and the best all-peridynamic curve in each) and
 error_vs_time_all.png (every curve). --plot-only redraws both charts from
 results.csv and runs nothing.
 """
-import argparse
 import csv
 import json
 import math
 import os
 import re
-import subprocess
 import sys
 import textwrap
 
 here = os.path.dirname(os.path.abspath(__file__))
-root = os.path.dirname(os.path.dirname(here))
 sys.path.insert(0, os.path.dirname(here))
+from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
+                           run_ltn, write_csv)
 from plate_scene import centred_plate  # noqa: E402
-parser = argparse.ArgumentParser()
-parser.add_argument("--ltn", default=os.path.join(root, "build", "ltn"))
-parser.add_argument("--out", default=os.path.join(here, "runs"))
+parser = ltn_argument_parser(default_out=os.path.join(here, "runs"))
 parser.add_argument("--scenes", nargs="+",
                     default=["plate_2d", "plate_2d_side_4", "bar_3d"])
 parser.add_argument("--csv", default=os.path.join(here, "results.csv"))
@@ -105,7 +102,8 @@ def plate_region_sized_to_crack(side=2):
             "Geometry/Overlap width=%g" % sized_overlap]
 
 
-plate_prm = os.path.join(root, "parameter_files", "lps_plate_2d_crack.prm")
+plate_prm = os.path.join(REPOSITORY_ROOT, "parameter_files",
+                         "lps_plate_2d_crack.prm")
 # Spacings 1/80 to 1/2560, halving, and one between the last two, 1/1920
 # (level 5; a lattice that still fits the crack and the region): there the
 # weighted coupled plate's error is the all-peridynamic plate's at 1/2560,
@@ -355,14 +353,11 @@ def run(scene, name, level, sets):
     summary = os.path.join(out, "summary.json")
     if options.reuse and os.path.exists(summary):
         return json.load(open(summary))
-    command = [options.ltn, scenes[scene]["prm"], "--output-dir", out,
-               "--set", "Output/Write VTU=false"]
     # A run's setting is a string, or a function of the level giving a list.
-    for s in baseline + scenes[scene]["levels"][level] + sets:
-        for setting in s(level) if callable(s) else [s]:
-            command += ["--set", setting]
-    subprocess.run(command, check=True, capture_output=True)
-    return json.load(open(summary))
+    settings = [setting
+                for s in baseline + scenes[scene]["levels"][level] + sets
+                for setting in (s(level) if callable(s) else [s])]
+    return run_ltn(options.ltn, scenes[scene]["prm"], out, settings)
 
 
 def extrapolate(values):
@@ -489,10 +484,7 @@ if os.path.exists(options.csv):
     order = list(scenes)
     rows = sorted(kept + rows, key=lambda row: order.index(row["scene"]))
 if not options.plot_only:
-    with open(options.csv, "w", newline="") as f:
-        writer = csv.DictWriter(f, fieldnames=list(rows[0]))
-        writer.writeheader()
-        writer.writerows(rows)
+    write_csv(options.csv, rows)
 
 import matplotlib
 matplotlib.use("Agg")
