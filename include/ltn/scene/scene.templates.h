@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 
 #include <ltn/base/field_errors.h>
+#include <ltn/coupling/system/control_traces.h>
 #include <ltn/coupling/system/overlap_quadrature.h>
 #include <ltn/output/field_output.h>
 #include <ltn/output/nonlocal_output.h>
@@ -251,7 +252,8 @@ namespace ltn
             timer.leave_subsection();
           }
 
-        OverlapQuadrature<dim> overlap;
+        const CouplingParameters &coupling = choice.coupling;
+        OverlapQuadrature<dim>    overlap;
         if (nonlocal && local)
           {
             enter("assemble coupling");
@@ -259,9 +261,14 @@ namespace ltn
                                                 eps,
                                                 *nonlocal,
                                                 local->get_dof_handler());
+            if (coupling.method == CouplingMethod::alternating_schwarz ||
+                coupling.method == CouplingMethod::alternating_schwarz_aitken)
+              add_control_traces(overlap,
+                                 *nonlocal,
+                                 local->get_model(),
+                                 local->get_dof_handler());
             timer.leave_subsection();
           }
-        const CouplingParameters &coupling = choice.coupling;
         enter("solve");
         solution = solve_level(nonlocal ? &nonlocal->get_model() : nullptr,
                                local ? &local->get_model() : nullptr,

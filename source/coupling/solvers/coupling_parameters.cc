@@ -13,7 +13,10 @@ namespace ltn
       {CouplingMethod::automatic, "auto"},
       {CouplingMethod::full_space_direct, "full space direct"},
       {CouplingMethod::full_space_gmres, "full space gmres"},
-      {CouplingMethod::reduced_space_cg, "reduced space cg"}};
+      {CouplingMethod::reduced_space_cg, "reduced space cg"},
+      {CouplingMethod::alternating_schwarz, "alternating schwarz"},
+      {CouplingMethod::alternating_schwarz_aitken,
+       "alternating schwarz aitken"}};
     return names;
   }
 
@@ -42,7 +45,12 @@ namespace ltn
         "(Model solvers `auto` from 50,000 particle unknowns "
         "on, or named), where its operator is matrix-free, "
         "or with Time standalone solves; full space direct "
-        "otherwise (doc/prm_guide.md, 'Large scenes').");
+        "otherwise (doc/prm_guide.md, 'Large scenes'). Baselines, "
+        "not LtN's optimization: `alternating schwarz` (each model "
+        "takes the other's trace as its controls, in turn, until the "
+        "mismatch at the local model's controls falls by the Relative "
+        "tolerance) and `alternating schwarz aitken` (the same with "
+        "Aitken's relaxation; doc/baseline_couplings.md).");
       prm.declare_entry("Tikhonov parameter",
                         "0",
                         Patterns::Double(0),

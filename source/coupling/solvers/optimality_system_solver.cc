@@ -2,6 +2,7 @@
 #include <ltn/coupling/solvers/full_space_gmres_solver.h>
 #include <ltn/coupling/solvers/optimality_system_solver.h>
 #include <ltn/coupling/solvers/reduced_space_solver.h>
+#include <ltn/coupling/solvers/schwarz_solver.h>
 
 namespace ltn
 {
@@ -29,6 +30,15 @@ namespace ltn
                                         parameters.controls);
         case CouplingMethod::full_space_direct:
           return solve_full_space_direct(system);
+        case CouplingMethod::alternating_schwarz:
+        case CouplingMethod::alternating_schwarz_aitken:
+          return solve_alternating_schwarz(
+            system,
+            parameters.method == CouplingMethod::alternating_schwarz_aitken,
+            parameters.relative_tolerance,
+            parameters.max_iterations,
+            parameters.model_solvers,
+            progress);
         case CouplingMethod::automatic:
           break;
       }

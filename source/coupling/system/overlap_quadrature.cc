@@ -11,33 +11,33 @@
 
 namespace ltn
 {
-  namespace
+  template <int dim>
+  SparseRow
+  fe_evaluation_row(const GridTools::Cache<dim> &cache,
+                    const DoFHandler<dim>       &dofs,
+                    const Point<dim>            &point)
   {
-    /** The row that evaluates a finite element field at @p point. */
-    template <int dim>
-    SparseRow
-    evaluation_row(const GridTools::Cache<dim> &cache,
-                   const DoFHandler<dim>       &dofs,
-                   const Point<dim>            &point)
-    {
-      const auto found = GridTools::find_active_cell_around_point(cache, point);
-      AssertThrow(found.first.state() == IteratorState::valid,
-                  ExcMessage("An overlap point lies outside the local mesh."));
-      const typename DoFHandler<dim>::active_cell_iterator cell(
-        &dofs.get_triangulation(),
-        found.first->level(),
-        found.first->index(),
-        &dofs);
-      std::vector<types::global_dof_index> indices(
-        dofs.get_fe().n_dofs_per_cell());
-      cell->get_dof_indices(indices);
-      SparseRow row;
-      for (unsigned int i = 0; i < indices.size(); ++i)
-        row.emplace_back(indices[i],
-                         dofs.get_fe().shape_value(i, found.second));
-      return row;
-    }
-  } // namespace
+    const auto found = GridTools::find_active_cell_around_point(cache, point);
+    AssertThrow(found.first.state() == IteratorState::valid,
+                ExcMessage("An overlap point lies outside the local mesh."));
+    const typename DoFHandler<dim>::active_cell_iterator cell(
+      &dofs.get_triangulation(),
+      found.first->level(),
+      found.first->index(),
+      &dofs);
+    std::vector<types::global_dof_index> indices(
+      dofs.get_fe().n_dofs_per_cell());
+    cell->get_dof_indices(indices);
+    SparseRow row;
+    for (unsigned int i = 0; i < indices.size(); ++i)
+      row.emplace_back(indices[i], dofs.get_fe().shape_value(i, found.second));
+    return row;
+  }
+
+  template SparseRow
+  fe_evaluation_row(const GridTools::Cache<1> &,
+                    const DoFHandler<1> &,
+                    const Point<1> &);
 
 
 
@@ -83,9 +83,9 @@ namespace ltn
             overlap.points.push_back(point);
             overlap.weights.push_back((b - a) * rule.weight(q));
             overlap.nonlocal_rows.push_back(
-              evaluation_row(nonlocal_cache, nonlocal_dofs, point));
+              fe_evaluation_row(nonlocal_cache, nonlocal_dofs, point));
             overlap.local_rows.push_back(
-              evaluation_row(local_cache, local_dofs, point));
+              fe_evaluation_row(local_cache, local_dofs, point));
           }
       }
     return overlap;

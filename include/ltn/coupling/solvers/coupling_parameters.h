@@ -25,7 +25,15 @@ namespace ltn
     /** The same system unassembled: flexible GMRES, block elimination. */
     full_space_gmres,
     /** CG on the controls, each model solved by its own solver. */
-    reduced_space_cg
+    reduced_space_cg,
+    /**
+     * A baseline, not LtN's optimization: alternating Schwarz, each model
+     * taking the other's trace as its controls, in turn
+     * (doc/baseline_couplings.md).
+     */
+    alternating_schwarz,
+    /** The same with Aitken's dynamic relaxation of the local controls. */
+    alternating_schwarz_aitken
   };
 
   /** The names of the methods in `Coupling/Method`. */

@@ -5,6 +5,8 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/grid/grid_tools_cache.h>
+
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
 #include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/nonlocal/particle_elasticity.h>
@@ -19,6 +21,13 @@ namespace ltn
 
   /** A sparse row: (degree of freedom, coefficient) pairs. */
   using SparseRow = std::vector<std::pair<types::global_dof_index, double>>;
+
+  /**
+   * A control of one model as the trace of the other model's field at its
+   * position: the control's degree of freedom and the row over the other
+   * model's degrees of freedom that evaluates that field there.
+   */
+  using ControlTrace = std::pair<types::global_dof_index, SparseRow>;
 
   /**
    * The discrete mismatch on the overlap `Omega_b` as a quadrature:
@@ -40,7 +49,25 @@ namespace ltn
     std::vector<double>     weights;
     std::vector<SparseRow>  nonlocal_rows;
     std::vector<SparseRow>  local_rows;
+
+    /**
+     * For the alternating Schwarz method (doc/baseline_couplings.md, 'The
+     * transfer operators'): the nonlocal controls as traces of the local
+     * field (`T_{l->n}`) and the local controls as traces of the nonlocal
+     * field (`T_{n->l}`), each held by the rank that found it. Empty unless
+     * add_control_traces() filled them.
+     */
+    std::vector<ControlTrace> nonlocal_control_traces;
+    std::vector<ControlTrace> local_control_traces;
   };
+
+  /** The row that evaluates the finite element field of @p dofs at
+   * @p point, in the active cell @p cache finds around it. */
+  template <int dim>
+  SparseRow
+  fe_evaluation_row(const GridTools::Cache<dim> &cache,
+                    const DoFHandler<dim>       &dofs,
+                    const Point<dim>            &point);
 
   /**
    * The exact L2 overlap quadrature of two 1D finite element fields: Gauss

@@ -1,0 +1,178 @@
+#!/usr/bin/env python3
+"""Stability maps of the couplings (issue 53): LtN's optimization-based
+coupling and the baselines, on the same 1D diffusion scenes, over the
+overlap width in horizons and the horizon in mesh sizes. Per cell and method:
+the quadratic patch test's error (FE_Q(2) on both sides, u = x^2), the L2
+error on the sine scene and its rate over one halving of h at fixed eps/h
+(eps -> 0), the iterations (LtN: reduced-space CG iterations; Schwarz:
+sweeps), and whether the run failed (its one-line message). Writes
+results.csv and maps.png next to this script.
+
+usage: python3 run.py [--ltn PATH] [--out DIR] [--plot-only]
+"""
+import csv
+import math
+import os
+import subprocess
+import sys
+
+here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.dirname(here))
+from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
+                           run_ltn, write_csv)
+
+parser = ltn_argument_parser(os.path.join(here, "runs"))
+parser.add_argument("--plot-only", action="store_true",
+                    help="redraw maps.png from results.csv, run nothing")
+args = parser.parse_args()
+
+METHODS = {"LtN": "reduced space cg",
+           "Schwarz": "alternating schwarz",
+           "Schwarz + Aitken": "alternating schwarz aitken"}
+HORIZON_IN_MESH_SIZES = [1, 2, 4, 8]
+OVERLAP_IN_HORIZONS = [0.5, 1, 2, 4, 8]
+# The finest mesh size of the first level: the widest overlap (8 horizons
+# of 8 mesh sizes) must still leave part of the nonlocal region [0, 1].
+MESH_SIZE = 1 / 128
+PATCH = ["Nonlocal model/Finite element degree=2",
+         "Local model/Finite element degree=2",
+         "Diffusion data/Exact solution=x^2",
+         "Diffusion data/Nonlocal right-hand side=-2",
+         "Diffusion data/Local right-hand side=-2",
+         "Discretization/Number of levels=1"]
+SMOOTH = ["Discretization/Number of levels=2"]
+SCENES = {"patch": "diffusion_1d_patch", "smooth": "diffusion_1d_convergence"}
+
+
+def cell_settings(method, eps_over_h, overlap_over_eps):
+    """The --set arguments of one cell: the method, the level's mesh size,
+    eps = m h at every level, the overlap width w = r eps of the first
+    level (fixed as h halves), a tight tolerance and room for sweeps."""
+    return [f"Coupling/Method={method}",
+            f"Discretization/Mesh size={MESH_SIZE}",
+            f"Nonlocal model/Horizon to mesh size ratio={eps_over_h}",
+            "Geometry/Overlap width="
+            f"{overlap_over_eps * eps_over_h * MESH_SIZE}",
+            "Coupling/Relative tolerance=1e-12",
+            "Coupling/Maximum iterations=2000"]
+
+
+def run_cell(method, eps_over_h, overlap_over_eps):
+    """One map cell of one method: a dict of its metrics."""
+    row = {"method": method, "eps_over_h": eps_over_h,
+           "overlap_over_eps": overlap_over_eps}
+    for name, scene in SCENES.items():
+        out = os.path.join(args.out, f"{method}_{eps_over_h}_"
+                           f"{overlap_over_eps}_{name}".replace(" ", "_"))
+        settings = cell_settings(METHODS[method], eps_over_h,
+                                 overlap_over_eps)
+        settings += PATCH if name == "patch" else SMOOTH
+        prm = os.path.join(REPOSITORY_ROOT, "parameter_files",
+                           scene + ".prm")
+        try:
+            summary = run_ltn(args.ltn, prm, out, settings)
+            # A one-level run's summary is that level's record.
+            levels = summary.get("convergence", [summary])
+        except subprocess.CalledProcessError as error:
+            # Exit status 2: the cell is not a valid scene (an overlap
+            # thinner than the mesh); 1: the method failed on it.
+            lines = error.stderr.decode().strip().splitlines()
+            kind = "invalid" if error.returncode == 2 else "failed"
+            row["status"] = f"{kind} ({name}): " + (
+                lines[-1] if lines else f"exit {error.returncode}")
+            return row
+        if name == "patch":
+            row["patch_error"] = levels[-1]["errors"]["coupled"]["linf"] / 1.75**2
+        else:
+            coarse, fine = (level["errors"]["coupled"]["l2"]
+                            for level in levels)
+            row["l2_error"] = fine
+            row["l2_rate"] = math.log2(coarse / fine)
+            row["iterations"] = max(level["solver"]["iterations"]
+                                    for level in levels)
+    row["status"] = "ok"
+    return row
+
+
+FIELDS = ["method", "eps_over_h", "overlap_over_eps", "patch_error",
+          "l2_error", "l2_rate", "iterations", "status"]
+results = os.path.join(here, "results.csv")
+if args.plot_only:
+    with open(results) as f:
+        rows = list(csv.DictReader(f))
+else:
+    rows = []
+    for method in METHODS:
+        for m in HORIZON_IN_MESH_SIZES:
+            for r in OVERLAP_IN_HORIZONS:
+                row = run_cell(method, m, r)
+                print(f"{method:17s} eps/h {m}  w/eps {r:4}: "
+                      + ", ".join(f"{k} {row[k]:.3g}" for k in
+                                  ("patch_error", "l2_error", "l2_rate",
+                                   "iterations") if k in row)
+                      + f" [{row['status']}]", flush=True)
+                rows.append({k: row.get(k, "") for k in FIELDS})
+    write_csv(results, rows)
+
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+except ImportError:
+    sys.exit(0)
+
+# Per metric: its title, and the floor of its logarithmic colour scale
+# (None: linear).
+METRICS = [("patch_error", "quadratic patch test, max error / max |u|",
+            1e-17),
+           ("l2_error", "L2 error, sine scene (h = 1/256)", 1e-17),
+           ("l2_rate", "L2 rate, h 1/128 -> 1/256 (eps/h fixed)", None),
+           ("iterations", "iterations (CG) / sweeps", 1)]
+figure, axes = plt.subplots(len(METRICS), len(METHODS),
+                            figsize=(4.2 * len(METHODS), 3.3 * len(METRICS)),
+                            constrained_layout=True)
+for i, (metric, title, floor) in enumerate(METRICS):
+    grids = {}
+    for method in METHODS:
+        grid = np.full((len(HORIZON_IN_MESH_SIZES),
+                        len(OVERLAP_IN_HORIZONS)), np.nan)
+        for row in rows:
+            if row["method"] != method or row[metric] in ("", None):
+                continue
+            a = HORIZON_IN_MESH_SIZES.index(int(float(row["eps_over_h"])))
+            b = OVERLAP_IN_HORIZONS.index(float(row["overlap_over_eps"]))
+            grid[a, b] = float(row[metric])
+        grids[method] = grid
+    shown = {m: (np.log10(np.maximum(g, floor)) if floor else g)
+             for m, g in grids.items()}
+    low = min(np.nanmin(s) for s in shown.values())
+    high = max(np.nanmax(s) for s in shown.values())
+    for j, method in enumerate(METHODS):
+        axis = axes[i, j]
+        image = axis.imshow(shown[method], origin="lower", cmap="YlGnBu",
+                            vmin=low, vmax=high, aspect="auto")
+        for a in range(len(HORIZON_IN_MESH_SIZES)):
+            for b in range(len(OVERLAP_IN_HORIZONS)):
+                value = grids[method][a, b]
+                status = next((row["status"] for row in rows
+                               if row["method"] == method
+                               and int(float(row["eps_over_h"]))
+                               == HORIZON_IN_MESH_SIZES[a]
+                               and float(row["overlap_over_eps"])
+                               == OVERLAP_IN_HORIZONS[b]), "")
+                text = (status.split(" ")[0] if not np.isfinite(value)
+                        else f"{value:.2g}" if metric != "iterations"
+                        else f"{value:.0f}")
+                axis.text(b, a, text, ha="center", va="center", fontsize=7,
+                          color="black" if np.isfinite(value) else "red")
+        axis.set_xticks(range(len(OVERLAP_IN_HORIZONS)),
+                        [f"{r:g}" for r in OVERLAP_IN_HORIZONS])
+        axis.set_yticks(range(len(HORIZON_IN_MESH_SIZES)),
+                        [str(m) for m in HORIZON_IN_MESH_SIZES])
+        axis.set_xlabel("overlap width / horizon")
+        axis.set_ylabel("horizon / mesh size")
+        axis.set_title(f"{method}: {title}", fontsize=8)
+    figure.colorbar(image, ax=axes[i, :],
+                    label=("log10 " if floor else "") + metric)
+figure.savefig(os.path.join(here, "maps.png"), dpi=110)
