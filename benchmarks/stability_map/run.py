@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """Stability maps of the couplings (issue 53): LtN's optimization-based
-coupling and the baselines, on the same 1D diffusion scenes, over the
+coupling and the baselines (alternating Schwarz, plain and with Aitken's
+relaxation; force-based blending), on the same 1D diffusion scenes, over the
 overlap width in horizons and the horizon in mesh sizes. Per cell and method:
 the quadratic patch test's error (FE_Q(2) on both sides, u = x^2), the L2
 error on the sine scene and its rate over one halving of h at fixed eps/h
 (eps -> 0), the iterations (LtN: reduced-space CG iterations; Schwarz:
-sweeps), and whether the run failed (its one-line message). Writes
+sweeps; blending: 1, a direct solve), force blending's matrix asymmetry,
+and whether the run failed (its one-line message). Writes
 results.csv and maps.png next to this script.
 
 usage: python3 run.py [--ltn PATH] [--out DIR] [--plot-only]
@@ -28,7 +30,8 @@ args = parser.parse_args()
 
 METHODS = {"LtN": "reduced space cg",
            "Schwarz": "alternating schwarz",
-           "Schwarz + Aitken": "alternating schwarz aitken"}
+           "Schwarz + Aitken": "alternating schwarz aitken",
+           "force blending": "force blending"}
 HORIZON_IN_MESH_SIZES = [1, 2, 4, 8]
 OVERLAP_IN_HORIZONS = [0.5, 1, 2, 4, 8]
 # The finest mesh size of the first level: the widest overlap (8 horizons
@@ -90,12 +93,14 @@ def run_cell(method, eps_over_h, overlap_over_eps):
             row["l2_rate"] = math.log2(coarse / fine)
             row["iterations"] = max(level["solver"]["iterations"]
                                     for level in levels)
+            # Force blending's |K - K^T|_F / |K|_F on the finer level.
+            row["asymmetry"] = levels[-1]["solver"].get("asymmetry", "")
     row["status"] = "ok"
     return row
 
 
 FIELDS = ["method", "eps_over_h", "overlap_over_eps", "patch_error",
-          "l2_error", "l2_rate", "iterations", "status"]
+          "l2_error", "l2_rate", "iterations", "asymmetry", "status"]
 results = os.path.join(here, "results.csv")
 if args.plot_only:
     with open(results) as f:

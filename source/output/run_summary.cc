@@ -54,6 +54,8 @@ namespace ltn
       j["solver"]["residual"]   = level.solver.residual;
       if (level.solver.true_residual >= 0)
         j["solver"]["true residual"] = level.solver.true_residual;
+      if (level.solver.asymmetry >= 0)
+        j["solver"]["asymmetry"] = level.solver.asymmetry;
       if (level.solver.explicit_controls > 0 || level.solver.coarse_modes > 0)
         {
           JsonValue &preconditioner = j["solver"]["control preconditioner"];

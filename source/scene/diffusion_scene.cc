@@ -210,6 +210,7 @@ namespace ltn
                 "surrogate extension",
                 "`diagonal` in 1D (the surrogate lives on the particle "
                 "lattice of 2D and 3D models)");
+    coupling_parameters.check_dimension(dim);
     coupling_parameters.check_operator(nonlocal_parameters.operator_storage ==
                                          OperatorStorage::matrix_free,
                                        geometry.has_local_model() &&

@@ -78,6 +78,26 @@ check_coupled_rates(const ltn::RunSummary &summary,
     }
 }
 
+/**
+ * Check that the coupled L2 error of every level of @p summary lies within
+ * @p fraction of @p reference's (a Catch2 CHECK each).
+ */
+inline void
+check_errors_near(const ltn::RunSummary &summary,
+                  const ltn::RunSummary &reference,
+                  const double           fraction)
+{
+  REQUIRE(summary.levels.size() == reference.levels.size());
+  for (std::size_t l = 0; l < summary.levels.size(); ++l)
+    {
+      const double ours   = summary.levels[l].coupled_errors.l2();
+      const double theirs = reference.levels[l].coupled_errors.l2();
+      INFO("level " << l << ": L2 error " << ours << ", the reference's "
+                    << theirs);
+      CHECK(std::abs(ours - theirs) <= fraction * theirs);
+    }
+}
+
 /** max_i |a_i - b_i| / max_i |b_i| over both fields of two solutions. */
 inline double
 relative_difference(const ltn::CouplingSolution &a,

@@ -66,6 +66,11 @@ namespace ltn
      */
     double true_residual = -1;
     /**
+     * Force-based blending's `|K - K^T|_F / |K|_F`: how far its matrix is
+     * from symmetric; negative for the other methods.
+     */
+    double asymmetry = -1;
+    /**
      * The controls whose Hessian block the preconditioner of the
      * reduced-space CG holds explicitly (ControlPreconditioner); 0 without.
      */

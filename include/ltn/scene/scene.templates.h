@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 
 #include <ltn/base/field_errors.h>
+#include <ltn/coupling/system/blending_nodes.h>
 #include <ltn/coupling/system/control_traces.h>
 #include <ltn/coupling/system/overlap_quadrature.h>
 #include <ltn/output/field_output.h>
@@ -267,6 +268,12 @@ namespace ltn
                                  *nonlocal,
                                  local->get_model(),
                                  local->get_dof_handler());
+            if constexpr (dim == 1)
+              if (coupling.method == CouplingMethod::force_blending)
+                add_blending_nodes(overlap,
+                                   geometry,
+                                   *nonlocal,
+                                   local->get_dof_handler());
             timer.leave_subsection();
           }
         enter("solve");

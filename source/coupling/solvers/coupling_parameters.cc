@@ -16,7 +16,8 @@ namespace ltn
       {CouplingMethod::reduced_space_cg, "reduced space cg"},
       {CouplingMethod::alternating_schwarz, "alternating schwarz"},
       {CouplingMethod::alternating_schwarz_aitken,
-       "alternating schwarz aitken"}};
+       "alternating schwarz aitken"},
+      {CouplingMethod::force_blending, "force blending"}};
     return names;
   }
 
@@ -50,7 +51,10 @@ namespace ltn
         "takes the other's trace as its controls, in turn, until the "
         "mismatch at the local model's controls falls by the Relative "
         "tolerance) and `alternating schwarz aitken` (the same with "
-        "Aitken's relaxation; doc/baseline_couplings.md).");
+        "Aitken's relaxation), `force blending` (1D: one field, "
+        "each node's equation the nonlocal and the local row weighted "
+        "by a blending function that falls from 1 to 0 across the "
+        "overlap; doc/baseline_couplings.md).");
       prm.declare_entry("Tikhonov parameter",
                         "0",
                         Patterns::Double(0),
@@ -296,6 +300,18 @@ namespace ltn
                   "a tolerance in (0, 1)");
     }
     prm.leave_subsection();
+  }
+
+
+
+  void
+  CouplingParameters::check_dimension(const unsigned int dim) const
+  {
+    check_input(dim == 1 || method != CouplingMethod::force_blending,
+                "Coupling/Method",
+                "force blending",
+                "a method of 2D and 3D scenes: force blending is implemented "
+                "in 1D only (on the shared mesh of both models)");
   }
 
 

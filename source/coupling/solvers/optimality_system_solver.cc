@@ -1,3 +1,4 @@
+#include <ltn/coupling/solvers/force_blending_solver.h>
 #include <ltn/coupling/solvers/full_space_direct_solver.h>
 #include <ltn/coupling/solvers/full_space_gmres_solver.h>
 #include <ltn/coupling/solvers/optimality_system_solver.h>
@@ -39,6 +40,8 @@ namespace ltn
             parameters.max_iterations,
             parameters.model_solvers,
             progress);
+        case CouplingMethod::force_blending:
+          return solve_force_blending(system);
         case CouplingMethod::automatic:
           break;
       }

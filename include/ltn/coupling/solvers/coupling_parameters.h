@@ -33,7 +33,12 @@ namespace ltn
      */
     alternating_schwarz,
     /** The same with Aitken's dynamic relaxation of the local controls. */
-    alternating_schwarz_aitken
+    alternating_schwarz_aitken,
+    /**
+     * A baseline: force-based blending, one field, each node's equation
+     * the models' rows weighted by the blending function (1D).
+     */
+    force_blending
   };
 
   /** The names of the methods in `Coupling/Method`. */
@@ -51,6 +56,13 @@ namespace ltn
 
     void
     parse_parameters(ParameterHandler &prm);
+
+    /**
+     * An InputError if the method does not exist in @p dim dimensions
+     * (force blending: 1D only).
+     */
+    void
+    check_dimension(const unsigned int dim) const;
 
     /**
      * These parameters at a level of an LPS scene whose overlap is

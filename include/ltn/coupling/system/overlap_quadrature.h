@@ -12,6 +12,7 @@
 #include <ltn/nonlocal/particle_elasticity.h>
 #include <ltn/problem/geometry.h>
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -59,6 +60,19 @@ namespace ltn
      */
     std::vector<ControlTrace> nonlocal_control_traces;
     std::vector<ControlTrace> local_control_traces;
+
+    /**
+     * For force-based blending in 1D (doc/baseline_couplings.md,
+     * 'Force-based blending'): the nodes of a shared mesh of the body, each
+     * with its blending weight `beta`, and per model (nonlocal, local) the
+     * node of each of its degrees of freedom. Empty unless
+     * add_blending_nodes() filled them.
+     */
+    struct BlendingNodes
+    {
+      std::vector<double>                                 beta;
+      std::array<std::vector<types::global_dof_index>, 2> node_of_dof;
+    } blending_nodes;
   };
 
   /** The row that evaluates the finite element field of @p dofs at
