@@ -1,16 +1,19 @@
 #!/usr/bin/env python3
 """Stability maps of the couplings (issue 53): LtN's optimization-based
 coupling and the baselines (alternating Schwarz, plain and with Aitken's
-relaxation; force-based blending), on the same 1D diffusion scenes, over the
+relaxation; in 1D force-based blending), on the same diffusion scenes (1D,
+or 2D on particles), over the
 overlap width in horizons and the horizon in mesh sizes. Per cell and method:
 the quadratic patch test's error (FE_Q(2) on both sides, u = x^2), the L2
 error on the sine scene and its rate over one halving of h at fixed eps/h
 (eps -> 0), the iterations (LtN: reduced-space CG iterations; Schwarz:
 sweeps; blending: 1, a direct solve), force blending's matrix asymmetry,
 and whether the run failed (its one-line message). Writes
-results.csv and maps.png next to this script.
+results.csv and maps.png (2D: results_2d.csv, maps_2d.png) next to this
+script.
 
-usage: python3 run.py [--ltn PATH] [--out DIR] [--plot-only]
+usage: python3 run.py [--ltn PATH] [--out DIR] [--dimension 1|2]
+                      [--plot-only]
 """
 import csv
 import math
@@ -24,27 +27,46 @@ from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
                            run_ltn, write_csv)
 
 parser = ltn_argument_parser(os.path.join(here, "runs"))
+parser.add_argument("--dimension", type=int, choices=(1, 2), default=1,
+                    help="1: the 1D scenes (results.csv, maps.png); 2: the "
+                    "2D scenes on particles (results_2d.csv, maps_2d.png)")
 parser.add_argument("--plot-only", action="store_true",
-                    help="redraw maps.png from results.csv, run nothing")
+                    help="redraw the maps from the results, run nothing")
 args = parser.parse_args()
 
 METHODS = {"LtN": "reduced space cg",
            "Schwarz": "alternating schwarz",
-           "Schwarz + Aitken": "alternating schwarz aitken",
-           "force blending": "force blending"}
+           "Schwarz + Aitken": "alternating schwarz aitken"}
+if args.dimension == 1:
+    # On the shared 1D mesh only.
+    METHODS["force blending"] = "force blending"
 HORIZON_IN_MESH_SIZES = [1, 2, 4, 8]
 OVERLAP_IN_HORIZONS = [0.5, 1, 2, 4, 8]
-# The finest mesh size of the first level: the widest overlap (8 horizons
-# of 8 mesh sizes) must still leave part of the nonlocal region [0, 1].
-MESH_SIZE = 1 / 128
-PATCH = ["Nonlocal model/Finite element degree=2",
-         "Local model/Finite element degree=2",
-         "Diffusion data/Exact solution=x^2",
-         "Diffusion data/Nonlocal right-hand side=-2",
-         "Diffusion data/Local right-hand side=-2",
-         "Discretization/Number of levels=1"]
+# The mesh size of the first level: in 1D the widest overlap (8 horizons
+# of 8 mesh sizes) must still leave part of the nonlocal region [0, 1]; in
+# 2D (particles at the mesh size's spacing) the cells with an overlap of
+# half the region or more are not scenes.
+MESH_SIZE = 1 / 128 if args.dimension == 1 else 1 / 32
+if args.dimension == 1:
+    PATCH = ["Nonlocal model/Finite element degree=2",
+             "Local model/Finite element degree=2",
+             "Diffusion data/Exact solution=x^2",
+             "Diffusion data/Nonlocal right-hand side=-2",
+             "Diffusion data/Local right-hand side=-2"]
+else:
+    # FE_Q(2) needs a particle per nodal spacing h/2.
+    PATCH = ["Local model/Finite element degree=2",
+             "Nonlocal model/Particle spacing to mesh size ratio=0.5",
+             "Diffusion data/Exact solution=x^2 + x*y - 0.5*y^2 + x",
+             "Diffusion data/Nonlocal right-hand side=-1",
+             "Diffusion data/Local right-hand side=-1"]
+PATCH.append("Discretization/Number of levels=1")
+# max |u| of the patch test's solution over the body: the error's scale.
+PATCH_MAX = 1.75**2 if args.dimension == 1 else 7.5
 SMOOTH = ["Discretization/Number of levels=2"]
-SCENES = {"patch": "diffusion_1d_patch", "smooth": "diffusion_1d_convergence"}
+SCENES = {"patch": f"diffusion_{args.dimension}d_patch",
+          "smooth": f"diffusion_{args.dimension}d_convergence"}
+SUFFIX = "" if args.dimension == 1 else "_2d"
 
 
 def cell_settings(method, eps_over_h, overlap_over_eps):
@@ -65,7 +87,7 @@ def run_cell(method, eps_over_h, overlap_over_eps):
     row = {"method": method, "eps_over_h": eps_over_h,
            "overlap_over_eps": overlap_over_eps}
     for name, scene in SCENES.items():
-        out = os.path.join(args.out, f"{method}_{eps_over_h}_"
+        out = os.path.join(args.out, f"{args.dimension}d_{method}_{eps_over_h}_"
                            f"{overlap_over_eps}_{name}".replace(" ", "_"))
         settings = cell_settings(METHODS[method], eps_over_h,
                                  overlap_over_eps)
@@ -85,7 +107,8 @@ def run_cell(method, eps_over_h, overlap_over_eps):
                 lines[-1] if lines else f"exit {error.returncode}")
             return row
         if name == "patch":
-            row["patch_error"] = levels[-1]["errors"]["coupled"]["linf"] / 1.75**2
+            row["patch_error"] = (levels[-1]["errors"]["coupled"]["linf"]
+                                  / PATCH_MAX)
         else:
             coarse, fine = (level["errors"]["coupled"]["l2"]
                             for level in levels)
@@ -101,7 +124,7 @@ def run_cell(method, eps_over_h, overlap_over_eps):
 
 FIELDS = ["method", "eps_over_h", "overlap_over_eps", "patch_error",
           "l2_error", "l2_rate", "iterations", "asymmetry", "status"]
-results = os.path.join(here, "results.csv")
+results = os.path.join(here, f"results{SUFFIX}.csv")
 if args.plot_only:
     with open(results) as f:
         rows = list(csv.DictReader(f))
@@ -131,8 +154,10 @@ except ImportError:
 # (None: linear).
 METRICS = [("patch_error", "quadratic patch test, max error / max |u|",
             1e-17),
-           ("l2_error", "L2 error, sine scene (h = 1/256)", 1e-17),
-           ("l2_rate", "L2 rate, h 1/128 -> 1/256 (eps/h fixed)", None),
+           ("l2_error", f"L2 error, sine scene (h = 1/{round(2 / MESH_SIZE)})",
+            1e-17),
+           ("l2_rate", f"L2 rate, h 1/{round(1 / MESH_SIZE)} -> "
+            f"1/{round(2 / MESH_SIZE)} (eps/h fixed)", None),
            ("iterations", "iterations (CG) / sweeps", 1)]
 figure, axes = plt.subplots(len(METRICS), len(METHODS),
                             figsize=(4.2 * len(METHODS), 3.3 * len(METRICS)),
@@ -180,4 +205,4 @@ for i, (metric, title, floor) in enumerate(METRICS):
         axis.set_title(f"{method}: {title}", fontsize=8)
     figure.colorbar(image, ax=axes[i, :],
                     label=("log10 " if floor else "") + metric)
-figure.savefig(os.path.join(here, "maps.png"), dpi=110)
+figure.savefig(os.path.join(here, f"maps{SUFFIX}.png"), dpi=110)

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <stdexcept>
 
 namespace ltn
 {
@@ -150,6 +151,12 @@ namespace ltn
                                to_string(relative) +
                                " times its first value at sweep " +
                                std::to_string(sweep)));
+        if (sweep >= max_iterations)
+          throw no_convergence(name,
+                               "Coupling/Relative tolerance",
+                               relative_tolerance,
+                               max_iterations,
+                               relative);
         // Stalled: at the rate of the last ten sweeps the tolerance is out
         // of reach within the sweeps left.
         if (sweep >= 10)
@@ -159,12 +166,21 @@ namespace ltn
               rate >= 1 ||
               sweep + std::log(relative_tolerance / relative) / std::log(rate) >
                 max_iterations;
-            if (out_of_reach || sweep >= max_iterations)
-              throw no_convergence(name,
-                                   "Coupling/Relative tolerance",
-                                   relative_tolerance,
-                                   max_iterations,
-                                   relative);
+            if (out_of_reach)
+              {
+                std::ostringstream message;
+                message << name << " stalled at sweep " << sweep
+                        << ": its mismatch on Gamma_c changed by a factor "
+                        << std::setprecision(3) << rate
+                        << " per sweep over the last ten, at which Coupling/"
+                           "Relative tolerance = "
+                        << relative_tolerance
+                        << " is out of reach within Coupling/Maximum "
+                           "iterations = "
+                        << max_iterations << " (relative mismatch " << relative
+                        << ")";
+                throw std::runtime_error(message.str());
+              }
           }
         if (aitken && sweep > 0)
           {
