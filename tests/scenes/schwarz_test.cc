@@ -106,3 +106,37 @@ TEST_CASE("alternating Schwarz in 1D: second order, sweeps growing as the "
       CHECK(sweeps_1d("alternating schwarz aitken", w) == 2);
     }
 }
+
+
+
+TEST_CASE("alternating Schwarz in 1D as eps -> 0 with the overlap one mesh "
+          "size wide: sweeps double per halving",
+          "[schwarz]")
+{
+  // eps = 2h, w = h: the contraction 1 - rho ~ h + d with d ~ eps / 4
+  // (doc/baseline_couplings.md): 104, 207, 413 sweeps for h = 1/16, 1/32,
+  // 1/64; LtN's coupled solution is the same to 1e-8 relative.
+  unsigned int previous = 0;
+  for (const double h : {1. / 16, 1. / 32, 1. / 64})
+    {
+      std::vector<std::string> sets = {
+        "Discretization/Mesh size=" + std::to_string(h),
+        "Discretization/Number of levels=1",
+        "Nonlocal model/Horizon to mesh size ratio=2",
+        "Geometry/Overlap width=" + std::to_string(h),
+        "Coupling/Relative tolerance=1e-10"};
+      const SceneRun ltn = run_scene("diffusion_1d_convergence", sets);
+      sets.push_back("Coupling/Method=alternating schwarz");
+      const SceneRun     run    = run_scene("diffusion_1d_convergence", sets);
+      const unsigned int sweeps = run.summary.levels.back().solver.iterations;
+      INFO("h " << h << ": " << sweeps << " sweeps, before " << previous);
+      if (previous > 0)
+        {
+          CHECK(sweeps >= 1.8 * previous);
+          CHECK(sweeps <= 2.2 * previous);
+        }
+      previous = sweeps;
+      CHECK(relative_difference(run.solutions.back(), ltn.solutions.back()) <=
+            1e-8);
+    }
+}
