@@ -18,14 +18,12 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(here))
 from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
                            run_ltn, write_csv)
+from couplings import COUPLINGS, failure_line  # noqa: E402
 
 parser = ltn_argument_parser(os.path.join(here, "runs"))
 args = parser.parse_args()
 
-METHODS = {"LtN": "reduced space cg",
-           "Schwarz": "alternating schwarz",
-           "Schwarz + Aitken": "alternating schwarz aitken",
-           "force blending": "force blending"}
+METHODS = COUPLINGS
 MESH_SIZES = [1 / 16, 1 / 32, 1 / 64, 1 / 128, 1 / 256, 1 / 512]
 
 rows = []
@@ -50,8 +48,7 @@ for method, name in METHODS.items():
             row["l2_error"] = summary["errors"]["coupled"]["l2"]
             row["status"] = "ok"
         except subprocess.CalledProcessError as error:
-            lines = error.stderr.decode().strip().splitlines()
-            row["status"] = lines[-1] if lines else f"exit {error.returncode}"
+            row["status"] = failure_line(error)
         rows.append({k: row.get(k, "") for k in
                      ("method", "h", "iterations", "l2_error", "status")})
         print(f"{method:17s} h 1/{round(1 / h)}: "

@@ -20,15 +20,14 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(here))
 from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
                            run_ltn, write_csv)
+from couplings import COUPLINGS_2D, failure_line  # noqa: E402
 
 parser = ltn_argument_parser(os.path.join(here, "runs"))
 parser.add_argument("--plot-only", action="store_true",
                     help="redraw poisson_ratio.png from the CSV, run nothing")
 args = parser.parse_args()
 
-METHODS = {"LtN": "reduced space cg",
-           "Schwarz": "alternating schwarz",
-           "Schwarz + Aitken": "alternating schwarz aitken"}
+METHODS = COUPLINGS_2D
 POISSON_RATIOS = [0.25, 0.45, 0.49, 0.499]
 # max |u| of the patch scene's solution (1e-5 x^2, 0) on [0, 2] x [0, 1].
 PATCH_MAX = 4e-5
@@ -71,9 +70,7 @@ else:
                     0]["relative_l2_difference_to_reference"]
                 row["status"] = "ok"
             except subprocess.CalledProcessError as error:
-                lines = error.stderr.decode().strip().splitlines()
-                row["status"] = f"failed ({scene}): " + (
-                    lines[-1] if lines else f"exit {error.returncode}")
+                row["status"] = f"failed ({scene}): " + failure_line(error)
             print(f"{method:17s} nu {nu}: "
                   + ", ".join(f"{k} {row[k]}" for k in FIELDS[2:]
                               if k in row), flush=True)

@@ -25,6 +25,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(here))
 from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
                            run_ltn, write_csv)
+from couplings import COUPLINGS, COUPLINGS_2D, failure_line  # noqa: E402
 
 parser = ltn_argument_parser(os.path.join(here, "runs"))
 parser.add_argument("--dimension", type=int, choices=(1, 2), default=1,
@@ -34,12 +35,7 @@ parser.add_argument("--plot-only", action="store_true",
                     help="redraw the maps from the results, run nothing")
 args = parser.parse_args()
 
-METHODS = {"LtN": "reduced space cg",
-           "Schwarz": "alternating schwarz",
-           "Schwarz + Aitken": "alternating schwarz aitken"}
-if args.dimension == 1:
-    # On the shared 1D mesh only.
-    METHODS["force blending"] = "force blending"
+METHODS = COUPLINGS if args.dimension == 1 else COUPLINGS_2D
 HORIZON_IN_MESH_SIZES = [1, 2, 4, 8]
 OVERLAP_IN_HORIZONS = [0.5, 1, 2, 4, 8]
 # The mesh size of the first level: in 1D the widest overlap (8 horizons
@@ -101,10 +97,8 @@ def run_cell(method, eps_over_h, overlap_over_eps):
         except subprocess.CalledProcessError as error:
             # Exit status 2: the cell is not a valid scene (an overlap
             # thinner than the mesh); 1: the method failed on it.
-            lines = error.stderr.decode().strip().splitlines()
             kind = "invalid" if error.returncode == 2 else "failed"
-            row["status"] = f"{kind} ({name}): " + (
-                lines[-1] if lines else f"exit {error.returncode}")
+            row["status"] = f"{kind} ({name}): " + failure_line(error)
             return row
         if name == "patch":
             row["patch_error"] = (levels[-1]["errors"]["coupled"]["linf"]

@@ -1,0 +1,19 @@
+"""What the stability-map scripts share: the couplings they compare (label:
+their `Coupling/Method`) and the one line a failed run reports."""
+
+# LtN by its reduced-space CG (its iterations are the ones that can grow);
+# the baselines as doc/baseline_couplings.md defines them. Force blending
+# exists on the shared 1D mesh only.
+COUPLINGS = {"LtN": "reduced space cg",
+             "Schwarz": "alternating schwarz",
+             "Schwarz + Aitken": "alternating schwarz aitken",
+             "force blending": "force blending"}
+COUPLINGS_2D = {label: method for label, method in COUPLINGS.items()
+                if method != "force blending"}
+
+
+def failure_line(error):
+    """The last line a run that failed (a subprocess.CalledProcessError of
+    run_ltn) wrote to stderr: ltn's one-line error or failure."""
+    lines = error.stderr.decode().strip().splitlines()
+    return lines[-1] if lines else f"exit {error.returncode}"
