@@ -1,6 +1,7 @@
 #include <deal.II/fe/mapping_q1.h>
 
 #include <ltn/coupling/system/control_traces.h>
+#include <ltn/coupling/system/fe_component_row.h>
 
 #include <algorithm>
 #include <cmath>
@@ -102,14 +103,8 @@ namespace ltn
           return;
         cell->get_dof_indices(dofs);
         for (unsigned int c = 0; c < Model::n_field_components; ++c)
-          {
-            SparseRow row;
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              if (fe.system_to_component_index(i).first == c)
-                row.emplace_back(dofs[i], fe.shape_value_component(i, unit, c));
-            overlap.nonlocal_control_traces.emplace_back(Model::dof(number, c),
-                                                         std::move(row));
-          }
+          overlap.nonlocal_control_traces.emplace_back(
+            Model::dof(number, c), fe_component_row(fe, dofs, unit, c));
       });
 
     // T_{n->l}: per axis the degree + 1 particle coordinates nearest to the

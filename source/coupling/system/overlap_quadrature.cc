@@ -5,6 +5,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 
+#include <ltn/coupling/system/fe_component_row.h>
 #include <ltn/coupling/system/overlap_quadrature.h>
 
 #include <algorithm>
@@ -144,11 +145,7 @@ namespace ltn
             overlap.weights.push_back(nonlocal.particle_volume());
             overlap.nonlocal_rows.push_back(
               {{ParticleModel<dim>::dof(number, c), 1.}});
-            SparseRow row;
-            for (unsigned int i = 0; i < dofs.size(); ++i)
-              if (fe.system_to_component_index(i).first == c)
-                row.emplace_back(dofs[i], fe.shape_value_component(i, unit, c));
-            overlap.local_rows.push_back(std::move(row));
+            overlap.local_rows.push_back(fe_component_row(fe, dofs, unit, c));
           }
       });
     return overlap;
