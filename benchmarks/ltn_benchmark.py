@@ -1,11 +1,12 @@
 """What the benchmark scripts share: the repository's root, the options that
-name the ltn program and the folder of its runs, one run of ltn, and the
-writing of results.csv."""
+name the ltn program and the folder of its runs, one run of ltn, the
+writing and reading back of results.csv and the charts' matplotlib."""
 import argparse
 import csv
 import json
 import os
 import subprocess
+import sys
 
 REPOSITORY_ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -42,3 +43,27 @@ def write_csv(path, rows):
         writer = csv.DictWriter(f, fieldnames=list(rows[0]))
         writer.writeheader()
         writer.writerows(rows)
+
+
+def results_rows(path, plot_only, run):
+    """The rows of the CSV file `path`: read back when `plot_only` (a
+    redraw), else the list of dicts `run()` returns, written there first."""
+    if plot_only:
+        with open(path) as f:
+            return list(csv.DictReader(f))
+    rows = run()
+    write_csv(path, rows)
+    return rows
+
+
+def pyplot_or_exit():
+    """matplotlib's pyplot, drawing to files; without matplotlib (Debian:
+    python3-matplotlib) the CSV is the whole result: say so and exit 0."""
+    try:
+        import matplotlib
+    except ImportError:
+        print("matplotlib not found (Debian: python3-matplotlib): no chart")
+        sys.exit(0)
+    matplotlib.use("Agg")
+    import matplotlib.pyplot
+    return matplotlib.pyplot

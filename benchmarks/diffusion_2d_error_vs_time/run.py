@@ -19,7 +19,7 @@ import sys
 
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(here))
-from ltn_benchmark import REPOSITORY_ROOT, write_csv  # noqa: E402
+from ltn_benchmark import REPOSITORY_ROOT, pyplot_or_exit, write_csv  # noqa: E402
 
 # Not ltn_argument_parser(): --out here holds results.csv and the chart too.
 parser = argparse.ArgumentParser()
@@ -86,13 +86,7 @@ for r in rows:
           f"iter={int(r['iterations']):<4d} L2={r['l2_error']:.3e} "
           f"wall={r['wall_s']:.3f}s")
 
-try:
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-except ImportError:
-    print("matplotlib not found (Debian: python3-matplotlib): no chart")
-    sys.exit(0)
+plt = pyplot_or_exit()
 figure, axis = plt.subplots(figsize=(6, 4.5))
 for method in methods:
     mine = [r for r in rows if r["method"] == method]

@@ -11,7 +11,6 @@ next to this script.
 
 usage: python3 poisson_ratio.py [--ltn PATH] [--out DIR] [--plot-only]
 """
-import csv
 import os
 import subprocess
 import sys
@@ -19,7 +18,7 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(here))
 from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
-                           run_ltn, write_csv)
+                           pyplot_or_exit, results_rows, run_ltn)
 from couplings import COUPLINGS_2D, failure_line  # noqa: E402
 
 parser = ltn_argument_parser(os.path.join(here, "runs"))
@@ -48,11 +47,8 @@ def run(method, nu, scene):
     return summary.get("convergence", [summary])[-1]
 
 
-results = os.path.join(here, "poisson_ratio.csv")
-if args.plot_only:
-    with open(results) as f:
-        rows = list(csv.DictReader(f))
-else:
+def run_axis():
+    """Every method at every Poisson ratio: the CSV's rows."""
     rows = []
     for method in METHODS:
         for nu in POISSON_RATIOS:
@@ -75,14 +71,13 @@ else:
                   + ", ".join(f"{k} {row[k]}" for k in FIELDS[2:]
                               if k in row), flush=True)
             rows.append({k: row.get(k, "") for k in FIELDS})
-    write_csv(results, rows)
+    return rows
 
-try:
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-except ImportError:
-    sys.exit(0)
+
+rows = results_rows(os.path.join(here, "poisson_ratio.csv"), args.plot_only,
+                    run_axis)
+
+plt = pyplot_or_exit()
 figure, axes = plt.subplots(1, 2, figsize=(10, 4), constrained_layout=True)
 for axis, key, title in zip(axes, ("patch_iterations", "crack_iterations"),
                             ("quadratic patch plate", "cracked plate")):

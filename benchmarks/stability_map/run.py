@@ -15,7 +15,6 @@ script.
 usage: python3 run.py [--ltn PATH] [--out DIR] [--dimension 1|2]
                       [--plot-only]
 """
-import csv
 import math
 import os
 import subprocess
@@ -24,7 +23,7 @@ import sys
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(here))
 from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
-                           run_ltn, write_csv)
+                           pyplot_or_exit, results_rows, run_ltn)
 from couplings import COUPLINGS, COUPLINGS_2D, failure_line  # noqa: E402
 
 parser = ltn_argument_parser(os.path.join(here, "runs"))
@@ -110,7 +109,7 @@ def run_cell(method, eps_over_h, overlap_over_eps):
             row["l2_rate"] = math.log2(coarse / fine)
             row["iterations"] = max(level["solver"]["iterations"]
                                     for level in levels)
-            # Force blending's |K - K^T|_F / |K|_F on the finer level.
+            # Blending's |K - K^T|_F / |K|_F on the finer level.
             row["asymmetry"] = levels[-1]["solver"].get("asymmetry", "")
     row["status"] = "ok"
     return row
@@ -118,11 +117,10 @@ def run_cell(method, eps_over_h, overlap_over_eps):
 
 FIELDS = ["method", "eps_over_h", "overlap_over_eps", "patch_error",
           "l2_error", "l2_rate", "iterations", "asymmetry", "status"]
-results = os.path.join(here, f"results{SUFFIX}.csv")
-if args.plot_only:
-    with open(results) as f:
-        rows = list(csv.DictReader(f))
-else:
+
+
+def run_map():
+    """Every cell of every method: the CSV's rows."""
     rows = []
     for method in METHODS:
         for m in HORIZON_IN_MESH_SIZES:
@@ -134,15 +132,14 @@ else:
                                    "iterations") if k in row)
                       + f" [{row['status']}]", flush=True)
                 rows.append({k: row.get(k, "") for k in FIELDS})
-    write_csv(results, rows)
+    return rows
 
-try:
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import numpy as np
-except ImportError:
-    sys.exit(0)
+
+rows = results_rows(os.path.join(here, f"results{SUFFIX}.csv"),
+                    args.plot_only, run_map)
+
+plt = pyplot_or_exit()
+import numpy as np  # noqa: E402 (matplotlib's dependency)
 
 # Per metric: its title, and the floor of its logarithmic colour scale
 # (None: linear).

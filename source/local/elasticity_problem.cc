@@ -198,19 +198,7 @@ namespace ltn
           hanging_nodes.distribute_local_to_global(
             cell_matrix, cell_rhs, dofs, model.matrix, model.rhs);
         }
-    model.matrix.compress(VectorOperation::add);
-    model.rhs.compress(VectorOperation::add);
-
-    std::map<types::global_dof_index, double> dirichlet_values;
-    for (const unsigned int face : parameters.dirichlet_faces)
-      VectorTools::interpolate_boundary_values(dof_handler,
-                                               face,
-                                               boundary_data,
-                                               dirichlet_values,
-                                               parameters.dirichlet_mask(face,
-                                                                         dim));
-    close_local_model(
-      dof_handler, hanging_nodes, dirichlet_values, control_boundary_id, model);
+    this->close_model(boundary_data);
   }
 
 

@@ -1,7 +1,11 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 
+#include <deal.II/numerics/vector_tools.h>
+
 #include <ltn/local/local_problem.h>
+
+#include <map>
 
 namespace ltn
 {
@@ -35,6 +39,28 @@ namespace ltn
   {
     return model;
   }
+
+
+
+  template <int dim, typename FE>
+  void
+  LocalProblem<dim, FE>::close_model(const Function<dim> &boundary_data)
+  {
+    model.matrix.compress(VectorOperation::add);
+    model.rhs.compress(VectorOperation::add);
+    std::map<types::global_dof_index, double> dirichlet_values;
+    for (const unsigned int face : parameters.dirichlet_faces)
+      VectorTools::interpolate_boundary_values(
+        dof_handler,
+        face,
+        boundary_data,
+        dirichlet_values,
+        parameters.dirichlet_mask(face, fe.n_components()));
+    close_local_model(
+      dof_handler, hanging_nodes, dirichlet_values, control_boundary_id, model);
+  }
+
+
 
   template class LocalProblem<1, FE_Q<1>>;
   template class LocalProblem<2, FE_Q<2>>;

@@ -90,17 +90,101 @@ namespace ltn
           hanging_nodes.distribute_local_to_global(
             cell_matrix, cell_rhs, dofs, model.matrix, model.rhs);
         }
-    model.matrix.compress(VectorOperation::add);
-    model.rhs.compress(VectorOperation::add);
+    this->close_model(boundary_data);
+  }
 
-    std::map<types::global_dof_index, double> dirichlet_values;
-    for (const unsigned int face : parameters.dirichlet_faces)
-      VectorTools::interpolate_boundary_values(dof_handler,
-                                               face,
-                                               boundary_data,
-                                               dirichlet_values);
-    close_local_model(
-      dof_handler, hanging_nodes, dirichlet_values, control_boundary_id, model);
+
+
+  template <int dim>
+  WeightedForm
+  PoissonProblem<dim>::weighted_form(const Function<dim>         &rhs,
+                                     const BlendingFunction<dim> &beta) const
+  {
+    AssertThrow(hanging_nodes.n_constraints() == 0,
+                ExcMessage("a weighted form on a mesh with hanging nodes"));
+    WeightedForm form;
+    form.matrix.reinit(model.matrix);
+    form.matrix = 0;
+    form.load   = model.new_vector();
+
+    std::array<std::vector<double>, dim> kinks;
+    for (unsigned int d = 0; d < dim; ++d)
+      kinks[d] = beta.kinks(d);
+    // Products of shape gradients are of degree 2p - 2, with the affine
+    // weight 2p - 1: p + 1 Gauss points per direction of each piece would
+    // do; the load is integrated as assemble() does, with p + 2.
+    const QGauss<1>                      rule(fe.degree + 2);
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+    std::vector<types::global_dof_index> dofs(dofs_per_cell);
+    FullMatrix<double>                   cell_matrix(dofs_per_cell);
+    Vector<double>                       cell_load(dofs_per_cell);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          // The cell's pieces between the kinks, as a quadrature on the
+          // unit cell (cells are boxes aligned with the axes).
+          const Point<dim> lower = cell->vertex(0);
+          const Point<dim> upper =
+            cell->vertex(GeometryInfo<dim>::vertices_per_cell - 1);
+          std::vector<Point<dim>> points(1);
+          std::vector<double>     weights(1, 1.);
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              std::vector<double> cuts = {lower[d]};
+              for (const double k : kinks[d])
+                if (k > lower[d] && k < upper[d])
+                  cuts.push_back(k);
+              cuts.push_back(upper[d]);
+              std::vector<Point<dim>> next_points;
+              std::vector<double>     next_weights;
+              for (std::size_t c = 0; c + 1 < cuts.size(); ++c)
+                {
+                  const double lo =
+                    (cuts[c] - lower[d]) / (upper[d] - lower[d]);
+                  const double hi =
+                    (cuts[c + 1] - lower[d]) / (upper[d] - lower[d]);
+                  for (unsigned int q = 0; q < rule.size(); ++q)
+                    for (std::size_t m = 0; m < points.size(); ++m)
+                      {
+                        Point<dim> p = points[m];
+                        p[d]         = lo + (hi - lo) * rule.point(q)[0];
+                        next_points.push_back(p);
+                        next_weights.push_back(weights[m] * rule.weight(q) *
+                                               (hi - lo));
+                      }
+                }
+              points.swap(next_points);
+              weights.swap(next_weights);
+            }
+          const Quadrature<dim> pieces(points, weights);
+          FEValues<dim>         fe_values(fe,
+                                  pieces,
+                                  update_values | update_gradients |
+                                    update_quadrature_points |
+                                    update_JxW_values);
+          fe_values.reinit(cell);
+          cell->get_dof_indices(dofs);
+          cell_matrix = 0;
+          cell_load   = 0;
+          for (unsigned int q = 0; q < pieces.size(); ++q)
+            {
+              const Point<dim> &x = fe_values.quadrature_point(q);
+              const double      w = (1 - beta.value(x)) * fe_values.JxW(q);
+              const double      f = rhs.value(x);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    cell_matrix(i, j) += w * fe_values.shape_grad(i, q) *
+                                         fe_values.shape_grad(j, q);
+                  cell_load(i) += w * f * fe_values.shape_value(i, q);
+                }
+            }
+          form.matrix.add(dofs, cell_matrix);
+          form.load.add(dofs, cell_load);
+        }
+    form.matrix.compress(VectorOperation::add);
+    form.load.compress(VectorOperation::add);
+    return form;
   }
 
 

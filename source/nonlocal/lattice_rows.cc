@@ -49,49 +49,44 @@ namespace ltn
     std::vector<types::global_dof_index> columns;
     std::vector<double>                  values;
     ParticleRows                         rows(n_components);
+    // Visit each stored row (its matrix, its index, its entries).
+    const auto for_each_stored_row = [&](const auto &visit) {
+      for (const auto p : particles)
+        {
+          rows_of(p, rows);
+          const unsigned int stored = stored_rows_of(p);
+          for (unsigned int c = 0; c < n_components; ++c)
+            if ((stored >> c) & 1u)
+              visit(group[c], n_components * p + c, rows[c]);
+        }
+    };
     relevant = owned_dofs;
-    for (const auto p : particles)
-      {
-        rows_of(p, rows);
-        const unsigned int stored = stored_rows_of(p);
-        for (unsigned int c = 0; c < n_components; ++c)
-          if ((stored >> c) & 1u)
-            {
-              columns.clear();
-              for (const auto &entry : rows[c])
-                columns.push_back(entry.first);
-              std::sort(columns.begin(), columns.end());
-              dsp[group[c]].add_entries(n_components * p + c,
-                                        columns.begin(),
-                                        columns.end(),
-                                        true);
-              relevant.add_indices(columns.begin(), columns.end());
-            }
-      }
+    for_each_stored_row([&](const unsigned int            g,
+                            const types::global_dof_index row,
+                            auto                         &entries) {
+      columns.clear();
+      for (const auto &entry : entries)
+        columns.push_back(entry.first);
+      std::sort(columns.begin(), columns.end());
+      dsp[g].add_entries(row, columns.begin(), columns.end(), true);
+      relevant.add_indices(columns.begin(), columns.end());
+    });
     relevant.compress();
     for (unsigned int g = 0; g < matrices.size(); ++g)
       matrices[g]->reinit(row_sets[g], owned_dofs, dsp[g], communicator);
     dsp.clear();
-    for (const auto p : particles)
-      {
-        rows_of(p, rows);
-        const unsigned int stored = stored_rows_of(p);
-        for (unsigned int c = 0; c < n_components; ++c)
-          if ((stored >> c) & 1u)
-            {
-              columns.clear();
-              values.clear();
-              for (const auto &[column, value] : rows[c])
-                {
-                  columns.push_back(column);
-                  values.push_back(value);
-                }
-              matrices[group[c]]->set(n_components * p + c,
-                                      columns.size(),
-                                      columns.data(),
-                                      values.data());
-            }
-      }
+    for_each_stored_row([&](const unsigned int            g,
+                            const types::global_dof_index row,
+                            auto                         &entries) {
+      columns.clear();
+      values.clear();
+      for (const auto &[column, value] : entries)
+        {
+          columns.push_back(column);
+          values.push_back(value);
+        }
+      matrices[g]->set(row, columns.size(), columns.data(), values.data());
+    });
     for (TrilinosWrappers::SparseMatrix *matrix : matrices)
       matrix->compress(VectorOperation::insert);
   }

@@ -57,6 +57,25 @@ namespace ltn
       std::vector<double> nodes;
       std::vector<double> inverse_denominators;
     };
+
+    /**
+     * [lo, hi] cut at the points of @p kinks inside it (all of it without
+     * kinks): the pieces on which a piecewise-affine weight is affine.
+     */
+    std::vector<std::pair<double, double>>
+    pieces(const double lo, const double hi, const std::vector<double> &kinks)
+    {
+      std::vector<std::pair<double, double>> result;
+      double                                 start = lo;
+      for (const double k : kinks)
+        if (k > start && k < hi)
+          {
+            result.emplace_back(start, k);
+            start = k;
+          }
+      result.emplace_back(start, hi);
+      return result;
+    }
   } // namespace
 
 
@@ -115,7 +134,7 @@ namespace ltn
   NonlocalWeakForm1D::assemble(const Function<1> &rhs,
                                const Function<1> &volume_data)
   {
-    assemble_matrix();
+    assemble_pair_form(model.matrix, nullptr);
     assemble_rhs(rhs);
 
     // Close the model: identity rows for the collar.
@@ -133,8 +152,42 @@ namespace ltn
 
 
 
+  WeightedForm
+  NonlocalWeakForm1D::weighted_form(const Function<1>         &rhs,
+                                    const BlendingFunction<1> &beta) const
+  {
+    WeightedForm form;
+    assemble_pair_form(form.matrix, &beta);
+    form.load                                  = model.new_vector();
+    const std::vector                    kinks = beta.kinks(0);
+    const QGauss<1>                      rule(fe.degree + 3);
+    const LagrangeBasis1D                basis(fe);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (geometry.nonlocal_region().contains_strictly(cell->center(), 0))
+        {
+          cell->get_dof_indices(dofs);
+          const double a = cell->vertex(0)[0], b = cell->vertex(1)[0];
+          for (const auto &[lo, hi] : pieces(a, b, kinks))
+            for (unsigned int q = 0; q < rule.size(); ++q)
+              {
+                const Point<1> x(lo + (hi - lo) * rule.point(q)[0]);
+                const double   w =
+                  rule.weight(q) * (hi - lo) * beta.value(x) * rhs.value(x);
+                for (unsigned int i = 0; i < dofs.size(); ++i)
+                  form.load(dofs[i]) +=
+                    w * basis.value(i, (x[0] - a) / (b - a));
+              }
+        }
+    form.load.compress(VectorOperation::add);
+    return form;
+  }
+
+
+
   void
-  NonlocalWeakForm1D::assemble_matrix()
+  NonlocalWeakForm1D::assemble_pair_form(TrilinosWrappers::SparseMatrix &matrix,
+                                         const BlendingFunction<1> *beta) const
   {
     // Cells from left to right, so that the cells within the horizon of a
     // cell form a contiguous window.
@@ -182,18 +235,26 @@ namespace ltn
       for (const auto i : pair_dofs)
         dsp.add_entries(i, pair_dofs.begin(), pair_dofs.end(), true);
     });
-    model.matrix.reinit(model.owned, model.owned, dsp, model.communicator);
+    matrix.reinit(model.owned, model.owned, dsp, model.communicator);
 
-    const double    beta = kernel.exponent();
-    const double    c    = kernel.scale();
+    // With a blending weight the integrand in x gains one degree on each
+    // piece where the weight is affine (2p + 1: still exact with p + 1
+    // points), and G(xi) one more (2p + 2), which Gauss-Legendre integrates
+    // exactly for the constant kernel with p + 2 points.
+    // (doc/baseline_couplings.md, 'Energy-based blending').
+    const std::vector<double> kinks =
+      beta ? beta->kinks(0) : std::vector<double>();
+    const double    exponent = kernel.exponent();
+    const double    c        = kernel.scale();
     const QGauss<1> x_rule(fe.degree + 1);
     // Pieces touching xi = 0: the integrand is xi^2 times a polynomial of
     // degree <= 2p - 1, against the weight |xi|^(2 - beta).
     const Quadrature<1> near_rule =
-      gauss_jacobi_unit_interval(fe.degree + 1, 2 - beta);
-    // Pieces away from 0: a polynomial of degree <= 2p + 1 against
-    // |xi|^-beta, which is smooth there.
-    const QGauss<1>       far_rule(beta == 0 ? fe.degree + 1 : 12);
+      gauss_jacobi_unit_interval(fe.degree + 1, 2 - exponent);
+    // Pieces away from 0: a polynomial of degree <= 2p + 1 (weighted:
+    // 2p + 2) against |xi|^-beta, which is smooth there.
+    const QGauss<1> far_rule(exponent == 0 ? fe.degree + 1 + (beta ? 1 : 0) :
+                                             12);
     const LagrangeBasis1D basis(fe);
 
     FullMatrix<double>  local_matrix;
@@ -227,25 +288,43 @@ namespace ltn
         const double x_hi = std::min(b1, b2 - xi);
         if (x_hi <= x_lo)
           return;
-        for (unsigned int q = 0; q < x_rule.size(); ++q)
-          {
-            const double x  = x_lo + (x_hi - x_lo) * x_rule.point(q)[0];
-            const double y  = x + xi;
-            const double t1 = (x - a1) / (b1 - a1), t2 = (y - a2) / (b2 - a2);
-            for (unsigned int k = 0; k < n; ++k)
-              differences[k] =
-                (index_in_1[k] >= 0 ? basis.value(index_in_1[k], t1) : 0.) -
-                (index_in_2[k] >= 0 ? basis.value(index_in_2[k], t2) : 0.);
-            const double w = weight * x_rule.weight(q) * (x_hi - x_lo);
-            for (unsigned int i = 0; i < n; ++i)
-              for (unsigned int j = 0; j < n; ++j)
-                local_matrix(i, j) += w * differences[i] * differences[j];
-          }
+        const auto add_piece = [&](const double lo, const double hi) {
+          for (unsigned int q = 0; q < x_rule.size(); ++q)
+            {
+              const double x  = lo + (hi - lo) * x_rule.point(q)[0];
+              const double y  = x + xi;
+              const double t1 = (x - a1) / (b1 - a1), t2 = (y - a2) / (b2 - a2);
+              for (unsigned int k = 0; k < n; ++k)
+                differences[k] =
+                  (index_in_1[k] >= 0 ? basis.value(index_in_1[k], t1) : 0.) -
+                  (index_in_2[k] >= 0 ? basis.value(index_in_2[k], t2) : 0.);
+              double w = weight * x_rule.weight(q) * (hi - lo);
+              if (beta)
+                w *=
+                  0.5 * (beta->value(Point<1>(x)) + beta->value(Point<1>(y)));
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  local_matrix(i, j) += w * differences[i] * differences[j];
+            }
+        };
+        if (!beta)
+          return add_piece(x_lo, x_hi);
+        // The weight's kinks in x and in y = x + xi cut [x_lo, x_hi].
+        std::vector<double> cuts = kinks;
+        for (const double k : kinks)
+          cuts.push_back(k - xi);
+        std::sort(cuts.begin(), cuts.end());
+        for (const auto &[lo, hi] : pieces(x_lo, x_hi, cuts))
+          add_piece(lo, hi);
       };
 
       const double        lo     = std::max(a2 - b1, -eps);
       const double        hi     = std::min(b2 - a1, eps);
       std::vector<double> breaks = {lo, hi, 0., a2 - a1, b2 - b1};
+      // Where a kink of the weight crosses an end of the x-interval.
+      for (const double k : kinks)
+        for (const double xi : {k - a1, k - b1, a2 - k, b2 - k})
+          breaks.push_back(xi);
       breaks.erase(std::remove_if(breaks.begin(),
                                   breaks.end(),
                                   [&](const double xi) {
@@ -269,7 +348,7 @@ namespace ltn
                 {
                   const double rho = len * near_rule.point(q)[0];
                   add_G(s * rho,
-                        c * std::pow(len, 3 - beta) * near_rule.weight(q) /
+                        c * std::pow(len, 3 - exponent) * near_rule.weight(q) /
                           (rho * rho));
                 }
             }
@@ -279,17 +358,14 @@ namespace ltn
                 const double xi = l + (r - l) * far_rule.point(q)[0];
                 add_G(xi,
                       (r - l) * far_rule.weight(q) * c *
-                        std::pow(std::abs(xi), -beta));
+                        std::pow(std::abs(xi), -exponent));
               }
         }
 
       for (unsigned int i = 0; i < n; ++i)
-        model.matrix.add(pair_dofs[i],
-                         n,
-                         pair_dofs.data(),
-                         &local_matrix(i, 0));
+        matrix.add(pair_dofs[i], n, pair_dofs.data(), &local_matrix(i, 0));
     });
-    model.matrix.compress(VectorOperation::add);
+    matrix.compress(VectorOperation::add);
   }
 
 

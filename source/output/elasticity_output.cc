@@ -1,12 +1,10 @@
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
-#include <deal.II/numerics/vector_tools.h>
 
 #include <ltn/output/elasticity_output.h>
+#include <ltn/output/field_output.h>
 #include <ltn/output/parallel_vtu.h>
 
 #include <cmath>
@@ -125,15 +123,6 @@ namespace ltn
   {
     AssertThrow(dof_handler.get_fe().n_components() == dim,
                 ExcDimensionMismatch(dof_handler.get_fe().n_components(), dim));
-    const MPI_Comm comm  = dof_handler.get_communicator();
-    const IndexSet owned = dof_handler.locally_owned_dofs();
-    IndexSet       relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    const auto ghosted = [&](const TrilinosWrappers::MPI::Vector &v) {
-      TrilinosWrappers::MPI::Vector result(owned, relevant, comm);
-      result = v;
-      return result;
-    };
     const std::vector<DataComponentInterpretation::DataComponentInterpretation>
       vector_field(dim,
                    DataComponentInterpretation::component_is_part_of_vector);
@@ -147,32 +136,27 @@ namespace ltn
     const StrainAndStress<dim> strain_and_stress(material, region_of);
     data_out.add_data_vector(ghosted_field, strain_and_stress);
 
-    TrilinosWrappers::MPI::Vector exact_ghosted, error_ghosted;
+    std::array<TrilinosWrappers::MPI::Vector, 2> exact_and_error;
     if (exact != nullptr)
       {
-        AssertThrow(exact->n_components == dim,
-                    ExcDimensionMismatch(exact->n_components, dim));
-        TrilinosWrappers::MPI::Vector exact_values(owned, comm),
-          error(owned, comm);
-        VectorTools::interpolate(dof_handler, *exact, exact_values);
-        for (const auto i : owned)
-          error(i) = ghosted_field(i) - exact_values(i);
-        error.compress(VectorOperation::insert);
-        exact_ghosted = ghosted(exact_values);
-        error_ghosted = ghosted(error);
-        data_out.add_data_vector(exact_ghosted,
+        exact_and_error =
+          nodal_exact_and_error(dof_handler, ghosted_field, *exact);
+        data_out.add_data_vector(exact_and_error[0],
                                  std::vector<std::string>(dim,
                                                           "displacement_exact"),
                                  DataOut<dim>::type_dof_data,
                                  vector_field);
-        data_out.add_data_vector(error_ghosted,
+        data_out.add_data_vector(exact_and_error[1],
                                  std::vector<std::string>(dim, "error"),
                                  DataOut<dim>::type_dof_data,
                                  vector_field);
       }
 
     data_out.build_patches(dof_handler.get_fe().degree);
-    return write_parallel_vtu(data_out, directory, name, comm);
+    return write_parallel_vtu(data_out,
+                              directory,
+                              name,
+                              dof_handler.get_communicator());
   }
 
   template std::string

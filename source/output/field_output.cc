@@ -15,6 +15,46 @@
 
 namespace ltn
 {
+  namespace
+  {
+    /** @p v with the values of @p dof_handler's locally relevant dofs. */
+    template <int dim>
+    TrilinosWrappers::MPI::Vector
+    ghosted(const DoFHandler<dim>               &dof_handler,
+            const TrilinosWrappers::MPI::Vector &v)
+    {
+      TrilinosWrappers::MPI::Vector result(
+        dof_handler.locally_owned_dofs(),
+        DoFTools::extract_locally_relevant_dofs(dof_handler),
+        dof_handler.get_communicator());
+      result = v;
+      return result;
+    }
+  } // namespace
+
+
+
+  template <int dim>
+  std::array<TrilinosWrappers::MPI::Vector, 2>
+  nodal_exact_and_error(const DoFHandler<dim>               &dof_handler,
+                        const TrilinosWrappers::MPI::Vector &field,
+                        const Function<dim>                 &exact)
+  {
+    AssertThrow(exact.n_components == dof_handler.get_fe().n_components(),
+                ExcDimensionMismatch(exact.n_components,
+                                     dof_handler.get_fe().n_components()));
+    const IndexSet                owned = dof_handler.locally_owned_dofs();
+    TrilinosWrappers::MPI::Vector values(owned, dof_handler.get_communicator());
+    TrilinosWrappers::MPI::Vector error(values);
+    VectorTools::interpolate(dof_handler, exact, values);
+    for (const auto i : owned)
+      error(i) = field(i) - values(i);
+    error.compress(VectorOperation::insert);
+    return {{ghosted(dof_handler, values), ghosted(dof_handler, error)}};
+  }
+
+
+
   template <int dim>
   std::string
   write_field_vtu(const DoFHandler<dim>               &dof_handler,
@@ -24,47 +64,37 @@ namespace ltn
                   const std::string                               &directory,
                   const std::string                               &name)
   {
-    const MPI_Comm comm  = dof_handler.get_communicator();
-    const IndexSet owned = dof_handler.locally_owned_dofs();
-    IndexSet       relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    const auto ghosted = [&](const TrilinosWrappers::MPI::Vector &v) {
-      TrilinosWrappers::MPI::Vector result(owned, relevant, comm);
-      result = v;
-      return result;
-    };
-
     DataOut<dim> data_out;
     data_out.attach_dof_handler(dof_handler);
     data_out.add_data_vector(field, "u");
 
-    TrilinosWrappers::MPI::Vector exact(owned, comm), error(owned, comm);
-    TrilinosWrappers::MPI::Vector exact_ghosted, error_ghosted;
+    std::array<TrilinosWrappers::MPI::Vector, 2> exact_and_error;
     if (exact_solution != nullptr)
       {
-        VectorTools::interpolate(dof_handler, *exact_solution, exact);
-        for (const auto i : owned)
-          error(i) = field(i) - exact(i);
-        error.compress(VectorOperation::insert);
-        exact_ghosted = ghosted(exact);
-        error_ghosted = ghosted(error);
-        data_out.add_data_vector(exact_ghosted, "u_exact");
-        data_out.add_data_vector(error_ghosted, "error");
+        exact_and_error =
+          nodal_exact_and_error(dof_handler, field, *exact_solution);
+        data_out.add_data_vector(exact_and_error[0], "u_exact");
+        data_out.add_data_vector(exact_and_error[1], "error");
       }
 
     std::map<types::global_dof_index, Point<dim>> support_points;
     DoFTools::map_dofs_to_support_points(MappingQ1<dim>(),
                                          dof_handler,
                                          support_points);
-    TrilinosWrappers::MPI::Vector region(owned, comm);
+    const IndexSet                owned = dof_handler.locally_owned_dofs();
+    TrilinosWrappers::MPI::Vector region(owned, dof_handler.get_communicator());
     for (const auto i : owned)
       region(i) = static_cast<double>(region_of(support_points.at(i)));
     region.compress(VectorOperation::insert);
-    const TrilinosWrappers::MPI::Vector region_ghosted = ghosted(region);
+    const TrilinosWrappers::MPI::Vector region_ghosted =
+      ghosted(dof_handler, region);
     data_out.add_data_vector(region_ghosted, "region");
 
     data_out.build_patches(dof_handler.get_fe().degree);
-    return write_parallel_vtu(data_out, directory, name, comm);
+    return write_parallel_vtu(data_out,
+                              directory,
+                              name,
+                              dof_handler.get_communicator());
   }
 
 
@@ -98,14 +128,18 @@ namespace ltn
     out << "  </Collection>\n</VTKFile>\n";
   }
 
-#define LTN_INSTANTIATE(dim)                           \
-  template std::string write_field_vtu(                \
-    const DoFHandler<dim> &,                           \
-    const TrilinosWrappers::MPI::Vector &,             \
-    const Function<dim> *,                             \
-    const std::function<Region(const Point<dim> &)> &, \
-    const std::string &,                               \
-    const std::string &);
+#define LTN_INSTANTIATE(dim)                                                   \
+  template std::string write_field_vtu(                                        \
+    const DoFHandler<dim> &,                                                   \
+    const TrilinosWrappers::MPI::Vector &,                                     \
+    const Function<dim> *,                                                     \
+    const std::function<Region(const Point<dim> &)> &,                         \
+    const std::string &,                                                       \
+    const std::string &);                                                      \
+  template std::array<TrilinosWrappers::MPI::Vector, 2> nodal_exact_and_error( \
+    const DoFHandler<dim> &,                                                   \
+    const TrilinosWrappers::MPI::Vector &,                                     \
+    const Function<dim> &);
   LTN_INSTANTIATE(1)
   LTN_INSTANTIATE(2)
   LTN_INSTANTIATE(3)

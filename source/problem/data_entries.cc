@@ -29,35 +29,50 @@ namespace ltn
 
 
   void
-  SolutionData::declare_solution_entries(ParameterHandler  &prm,
-                                         const std::string &field)
+  SolutionData::declare_subsection(
+    ParameterHandler            &prm,
+    const std::string           &subsection,
+    const std::string           &field,
+    const std::function<void()> &declare_physics_entries)
   {
-    prm.declare_entry("Exact solution",
-                      "",
-                      Patterns::Anything(),
-                      "The exact solution, " + field +
-                        ", if known: errors are reported against it. Empty: "
-                        "none.");
-    prm.declare_entry("Boundary data",
-                      "",
-                      Patterns::Anything(),
-                      "Dirichlet data g of the local model on its Dirichlet "
-                      "boundaries. Empty: the exact solution.");
-    prm.declare_entry("Volume constraint data",
-                      "",
-                      Patterns::Anything(),
-                      "Data u_n = g of the nonlocal model on its physical "
-                      "collar. Empty: the exact solution.");
+    prm.enter_subsection(subsection);
+    {
+      prm.declare_entry("Exact solution",
+                        "",
+                        Patterns::Anything(),
+                        "The exact solution, " + field +
+                          ", if known: errors are reported against it. "
+                          "Empty: none.");
+      prm.declare_entry("Boundary data",
+                        "",
+                        Patterns::Anything(),
+                        "Dirichlet data g of the local model on its "
+                        "Dirichlet boundaries. Empty: the exact solution.");
+      prm.declare_entry("Volume constraint data",
+                        "",
+                        Patterns::Anything(),
+                        "Data u_n = g of the nonlocal model on its physical "
+                        "collar. Empty: the exact solution.");
+      declare_physics_entries();
+    }
+    prm.leave_subsection();
   }
 
 
 
   void
-  SolutionData::parse_solution_entries(ParameterHandler &prm)
+  SolutionData::parse_subsection(
+    ParameterHandler            &prm,
+    const std::function<void()> &parse_physics_entries)
   {
-    exact_solution         = prm.get("Exact solution");
-    boundary_data          = prm.get("Boundary data");
-    volume_constraint_data = prm.get("Volume constraint data");
+    prm.enter_subsection(subsection);
+    {
+      exact_solution         = prm.get("Exact solution");
+      boundary_data          = prm.get("Boundary data");
+      volume_constraint_data = prm.get("Volume constraint data");
+      parse_physics_entries();
+    }
+    prm.leave_subsection();
   }
 
 

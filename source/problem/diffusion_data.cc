@@ -15,9 +15,7 @@ namespace ltn
   void
   DiffusionData::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Diffusion data");
-    {
-      SolutionData::declare_solution_entries(prm, "u");
+    declare_subsection(prm, "Diffusion data", "u", [&prm] {
       prm.declare_entry("Nonlocal right-hand side",
                         "0",
                         Patterns::Anything(),
@@ -39,8 +37,7 @@ namespace ltn
                         "The wave number k of a plane-wave solution: defines "
                         "the constants k and sigma = sigma(k) of the kernel "
                         "for all expressions.");
-    }
-    prm.leave_subsection();
+    });
   }
 
 
@@ -48,15 +45,12 @@ namespace ltn
   void
   DiffusionData::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection(subsection);
-    {
-      parse_solution_entries(prm);
+    parse_subsection(prm, [&] {
       nonlocal_rhs      = prm.get("Nonlocal right-hand side");
       local_rhs         = prm.get("Local right-hand side");
       boundary_gradient = prm.get("Boundary gradient");
       wave_number       = prm.get_double("Plane wave number");
-    }
-    prm.leave_subsection();
+    });
   }
 
 

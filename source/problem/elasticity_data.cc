@@ -18,32 +18,30 @@ namespace ltn
   void
   ElasticityData::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Elasticity data");
-    {
-      SolutionData::declare_solution_entries(
-        prm,
-        "the displacement u (dim components separated "
-        "by ';')");
-      prm.declare_entry("Body force",
-                        "",
-                        Patterns::Anything(),
-                        "The body force b (dim components "
-                        "separated by ';') of both models. Empty: zero.");
-      prm.declare_entry("Traction",
-                        "",
-                        Patterns::Anything(),
-                        "The traction t (dim components) on the "
-                        "local model's Neumann faces (the body faces of the "
-                        "local region that are not Dirichlet for a "
-                        "component). Empty: zero.");
-      prm.declare_entry("Pressure",
-                        "0",
-                        Patterns::Anything(),
-                        "A pressure p on the same faces, adding "
-                        "the traction -p n (n the outward normal): a negative "
-                        "pressure pulls.");
-    }
-    prm.leave_subsection();
+    declare_subsection(
+      prm,
+      "Elasticity data",
+      "the displacement u (dim components separated by ';')",
+      [&prm] {
+        prm.declare_entry("Body force",
+                          "",
+                          Patterns::Anything(),
+                          "The body force b (dim components "
+                          "separated by ';') of both models. Empty: zero.");
+        prm.declare_entry("Traction",
+                          "",
+                          Patterns::Anything(),
+                          "The traction t (dim components) on the "
+                          "local model's Neumann faces (the body faces of the "
+                          "local region that are not Dirichlet for a "
+                          "component). Empty: zero.");
+        prm.declare_entry("Pressure",
+                          "0",
+                          Patterns::Anything(),
+                          "A pressure p on the same faces, adding "
+                          "the traction -p n (n the outward normal): a "
+                          "negative pressure pulls.");
+      });
   }
 
 
@@ -51,14 +49,11 @@ namespace ltn
   void
   ElasticityData::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection(subsection);
-    {
-      parse_solution_entries(prm);
+    parse_subsection(prm, [&] {
       body_force = prm.get("Body force");
       traction   = prm.get("Traction");
       pressure   = prm.get("Pressure");
-    }
-    prm.leave_subsection();
+    });
   }
 
 

@@ -59,12 +59,6 @@ namespace ltn
       const std::string                   dofs_label         = "nonlocal dofs";
       static constexpr bool               grouped_collection = false;
 
-      std::unique_ptr<Nonlocal>
-      make_nonlocal() const
-      {
-        return make_nonlocal(geometry);
-      }
-
       /** The level's nonlocal model on @p layout (kept alive by the caller). */
       std::unique_ptr<Nonlocal>
       make_nonlocal(const Geometry<dim> &layout) const
@@ -122,6 +116,22 @@ namespace ltn
       coupling() const
       {
         return coupling_parameters;
+      }
+
+      /**
+       * The weighted forms of energy-based blending (1D): the nonlocal
+       * model's with `beta`, the local model's with `1 - beta`.
+       */
+      std::array<std::shared_ptr<const WeightedForm>, 2>
+      weighted_forms(const Nonlocal &nonlocal, const Local &local) const
+      {
+        const BlendingFunction<dim>                        beta(geometry);
+        std::array<std::shared_ptr<const WeightedForm>, 2> forms;
+        forms[nonlocal_model] = std::make_shared<const WeightedForm>(
+          nonlocal.weighted_form(*data.nonlocal_rhs, beta));
+        forms[local_model] = std::make_shared<const WeightedForm>(
+          local.weighted_form(*data.local_rhs, beta));
+        return forms;
       }
 
       const Function<dim> *
@@ -215,6 +225,34 @@ namespace ltn
                                          OperatorStorage::matrix_free,
                                        geometry.has_local_model() &&
                                          geometry.has_nonlocal_model());
+    // Blending identifies the two meshes' nodes by position.
+    const CouplingMethod method   = coupling_parameters.method;
+    const bool           blending = method == CouplingMethod::force_blending ||
+                          method == CouplingMethod::energy_blending;
+    const std::string method_name =
+      selection_name(coupling_method_names(), method);
+    check_input(!blending ||
+                  nonlocal_parameters.degree == local_parameters.degree,
+                "Local model/Finite element degree",
+                std::to_string(local_parameters.degree),
+                "the nonlocal model's degree (" +
+                  std::to_string(nonlocal_parameters.degree) + ") with " +
+                  method_name +
+                  ": its field lives on the nodes both meshes "
+                  "share");
+    check_input(!blending || local_parameters.adaptive_cycles == 0 ||
+                  !geometry.has_nonlocal_model(),
+                "Local model/Adaptive refinement cycles",
+                std::to_string(local_parameters.adaptive_cycles),
+                "0 with " + method_name +
+                  ": its field lives on the nodes both meshes share");
+    check_input(method != CouplingMethod::energy_blending ||
+                  local_parameters.dirichlet_faces.size() == 2 * dim,
+                "Local model/Dirichlet boundaries",
+                std::to_string(local_parameters.dirichlet_faces.size()) +
+                  " faces",
+                "every face of the body with energy blending (its weighted "
+                "local energy carries no boundary flux)");
     check_input(local_parameters.dirichlet_components.empty(),
                 "Local model/Dirichlet components",
                 local_parameters.dirichlet_components_text,

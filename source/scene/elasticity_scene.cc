@@ -189,12 +189,6 @@ namespace ltn
       const std::string     dofs_label         = "particle dofs";
       static constexpr bool grouped_collection = true;
 
-      std::unique_ptr<Nonlocal>
-      make_nonlocal() const
-      {
-        return make_nonlocal(geometry);
-      }
-
       /** The level's nonlocal model on @p layout (kept alive by the caller). */
       std::unique_ptr<Nonlocal>
       make_nonlocal(const Geometry<dim> &layout) const

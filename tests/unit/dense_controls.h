@@ -14,28 +14,33 @@ namespace dense_controls
   using BlockVectorType = dealii::TrilinosWrappers::MPI::BlockVector;
   using Sizes           = std::array<unsigned int, 2>;
 
-  /** A zero vector with blocks of @p sizes. */
-  inline BlockVectorType
-  new_vector(const Sizes &sizes)
+  /** Control vectors of two blocks of the sizes `sizes`. */
+  struct Blocks
   {
-    BlockVectorType v(2);
-    for (const unsigned int k : {0u, 1u})
-      v.block(k).reinit(dealii::complete_index_set(sizes[k]), MPI_COMM_SELF);
-    v.collect_sizes();
-    return v;
-  }
+    /** A zero vector. */
+    BlockVectorType
+    new_vector() const
+    {
+      BlockVectorType v(2);
+      for (const unsigned int k : {0u, 1u})
+        v.block(k).reinit(dealii::complete_index_set(sizes[k]), MPI_COMM_SELF);
+      v.collect_sizes();
+      return v;
+    }
 
-  /** The vector with blocks of @p sizes and entries `f(i)`. */
-  inline BlockVectorType
-  from_function(const Sizes                               &sizes,
-                const std::function<double(unsigned int)> &f)
-  {
-    BlockVectorType v = new_vector(sizes);
-    for (unsigned int i = 0; i < v.size(); ++i)
-      v(i) = f(i);
-    v.compress(dealii::VectorOperation::insert);
-    return v;
-  }
+    /** The vector with entries `f(i)`. */
+    BlockVectorType
+    from_function(const std::function<double(unsigned int)> &f) const
+    {
+      BlockVectorType v = new_vector();
+      for (unsigned int i = 0; i < v.size(); ++i)
+        v(i) = f(i);
+      v.compress(dealii::VectorOperation::insert);
+      return v;
+    }
+
+    const Sizes sizes;
+  };
 
   /** `dst = A src`. */
   inline void

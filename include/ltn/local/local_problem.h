@@ -74,6 +74,15 @@ namespace ltn
       setup_local_dofs(dof_handler, fe, communicator, hanging_nodes, model);
     }
 
+    /**
+     * Sum the ranks' contributions to the assembled model and close it: the
+     * components LocalParameters::dirichlet_mask() selects on the Dirichlet
+     * faces take @p boundary_data, the hanging nodes and the controls are
+     * as close_local_model() says.
+     */
+    void
+    close_model(const Function<dim> &boundary_data);
+
     const LocalParameters<dim> &parameters;
     const MPI_Comm              communicator;
     LocalMesh<dim>              mesh;

@@ -5,6 +5,7 @@
 #include <deal.II/fe/fe_q.h>
 
 #include <ltn/local/local_problem.h>
+#include <ltn/problem/blending_function.h>
 #include <ltn/problem/geometry.h>
 
 namespace ltn
@@ -43,6 +44,19 @@ namespace ltn
     assemble(const Function<dim> &rhs,
              const Function<dim> &boundary_data,
              const Function<dim> &boundary_gradient);
+
+    /**
+     * For energy-based blending (doc/baseline_couplings.md, 'Energy-based
+     * blending'): the stiffness form with the coefficient `1 - beta` and the
+     * load of `(1 - beta) rhs`, every row a test function (Dirichlet and
+     * control rows too; hanging nodes are not supported, nor are Neumann
+     * fluxes). Each cell is integrated on the boxes that the planes of
+     * `beta.kinks()` cut it into: exact where `beta` is affine on them (in
+     * 1D, everywhere).
+     */
+    WeightedForm
+    weighted_form(const Function<dim>         &rhs,
+                  const BlendingFunction<dim> &beta) const;
 
   private:
     using Base = LocalProblem<dim, FE_Q<dim>>;

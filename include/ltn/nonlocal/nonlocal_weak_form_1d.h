@@ -11,6 +11,7 @@
 #include <ltn/base/discrete_model.h>
 #include <ltn/base/field_errors.h>
 #include <ltn/nonlocal/kernel.h>
+#include <ltn/problem/blending_function.h>
 #include <ltn/problem/geometry.h>
 
 #include <vector>
@@ -79,9 +80,24 @@ namespace ltn
     errors(const TrilinosWrappers::MPI::Vector &field,
            const Function<1>                   &exact) const;
 
+    /**
+     * For energy-based blending (doc/baseline_couplings.md, 'Energy-based
+     * blending'): the form with the bond weight `(beta(x) + beta(y)) / 2`
+     * and the load of `beta rhs` over `Omega_n`, every row a test function
+     * (the collar's too), exact on the pieces where @p beta is affine.
+     */
+    WeightedForm
+    weighted_form(const Function<1>         &rhs,
+                  const BlendingFunction<1> &beta) const;
+
   private:
+    /**
+     * The pair form into @p matrix, its pattern made anew; with @p beta,
+     * weighted as weighted_form() says.
+     */
     void
-    assemble_matrix();
+    assemble_pair_form(TrilinosWrappers::SparseMatrix &matrix,
+                       const BlendingFunction<1>      *beta) const;
 
     void
     assemble_rhs(const Function<1> &rhs);

@@ -8,6 +8,7 @@
 
 #include <ltn/problem/geometry.h>
 
+#include <array>
 #include <functional>
 #include <string>
 #include <utility>
@@ -16,6 +17,17 @@
 namespace ltn
 {
   using namespace dealii;
+
+  /**
+   * The nodal interpolant of @p exact on @p dof_handler and the error
+   * `field - exact` at the nodes, both with the values of the locally
+   * relevant degrees of freedom (for DataOut).
+   */
+  template <int dim>
+  std::array<TrilinosWrappers::MPI::Vector, 2>
+  nodal_exact_and_error(const DoFHandler<dim>               &dof_handler,
+                        const TrilinosWrappers::MPI::Vector &field,
+                        const Function<dim>                 &exact);
 
   /**
    * Write a distributed finite element field as `directory/name.pvtu` (see

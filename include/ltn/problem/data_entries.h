@@ -5,6 +5,7 @@
 #include <ltn/base/expression.h>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -42,15 +43,23 @@ namespace ltn
     explicit SolutionData(std::string subsection);
 
     /**
-     * Declare `Exact solution`, `Boundary data` and `Volume constraint
-     * data` in the current subsection, for the field @p field (e.g. "u").
+     * Declare the subsection @p subsection: `Exact solution`, `Boundary
+     * data` and `Volume constraint data` for the field @p field (e.g. "u"),
+     * then the physics' own entries by @p declare_physics_entries.
      */
     static void
-    declare_solution_entries(ParameterHandler &prm, const std::string &field);
+    declare_subsection(ParameterHandler            &prm,
+                       const std::string           &subsection,
+                       const std::string           &field,
+                       const std::function<void()> &declare_physics_entries);
 
-    /** Read them, in the current subsection. */
+    /**
+     * Read the subsection: the solution entries, then the physics' own by
+     * @p parse_physics_entries.
+     */
     void
-    parse_solution_entries(ParameterHandler &prm);
+    parse_subsection(ParameterHandler            &prm,
+                     const std::function<void()> &parse_physics_entries);
 
     /** Them, with their defaults. */
     std::vector<DefaultEntry>

@@ -204,7 +204,7 @@ namespace ltn
         if (cycle == 0)
           {
             if (geometry.has_nonlocal_model())
-              nonlocal = physics.make_nonlocal();
+              nonlocal = physics.make_nonlocal(geometry);
             if (geometry.has_local_model())
               local = physics.make_local(geometry, level_local_parameters);
           }
@@ -269,11 +269,17 @@ namespace ltn
                                  local->get_model(),
                                  local->get_dof_handler());
             if constexpr (dim == 1)
-              if (coupling.method == CouplingMethod::force_blending)
-                add_blending_nodes(overlap,
-                                   geometry,
-                                   *nonlocal,
-                                   local->get_dof_handler());
+              if (coupling.method == CouplingMethod::force_blending ||
+                  coupling.method == CouplingMethod::energy_blending)
+                {
+                  add_blending_nodes(overlap,
+                                     geometry,
+                                     *nonlocal,
+                                     local->get_dof_handler());
+                  if (coupling.method == CouplingMethod::energy_blending)
+                    overlap.blending_nodes.energy =
+                      physics.weighted_forms(*nonlocal, *local);
+                }
             timer.leave_subsection();
           }
         enter("solve");

@@ -17,7 +17,8 @@ namespace ltn
       {CouplingMethod::alternating_schwarz, "alternating schwarz"},
       {CouplingMethod::alternating_schwarz_aitken,
        "alternating schwarz aitken"},
-      {CouplingMethod::force_blending, "force blending"}};
+      {CouplingMethod::force_blending, "force blending"},
+      {CouplingMethod::energy_blending, "energy blending"}};
     return names;
   }
 
@@ -54,7 +55,10 @@ namespace ltn
         "Aitken's relaxation), `force blending` (1D: one field, "
         "each node's equation the nonlocal and the local row weighted "
         "by a blending function that falls from 1 to 0 across the "
-        "overlap; doc/baseline_couplings.md).");
+        "overlap) and `energy blending` (1D: one field minimizing the "
+        "nonlocal energy weighted by the blending function plus the "
+        "local one weighted by its complement; every body face "
+        "Dirichlet); doc/baseline_couplings.md.");
       prm.declare_entry("Tikhonov parameter",
                         "0",
                         Patterns::Double(0),
@@ -307,11 +311,18 @@ namespace ltn
   void
   CouplingParameters::check_dimension(const unsigned int dim) const
   {
-    check_input(dim == 1 || method != CouplingMethod::force_blending,
-                "Coupling/Method",
-                "force blending",
-                "a method of 2D and 3D scenes: force blending is implemented "
-                "in 1D only (on the shared mesh of both models)");
+    for (const CouplingMethod blending :
+         {CouplingMethod::force_blending, CouplingMethod::energy_blending})
+      {
+        const std::string name =
+          selection_name(coupling_method_names(), blending);
+        check_input(dim == 1 || method != blending,
+                    "Coupling/Method",
+                    name,
+                    "a method of 2D and 3D scenes: " + name +
+                      " is implemented in 1D only (on the shared mesh of "
+                      "both models)");
+      }
   }
 
 

@@ -1,12 +1,10 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <ltn/coupling/solvers/blended_system.h>
 #include <ltn/coupling/solvers/force_blending_solver.h>
-
-#include <cmath>
 
 namespace ltn
 {
@@ -63,36 +61,7 @@ namespace ltn
       load(node) += w * system.models[k]->rhs(i);
     });
 
-    CouplingSolution    solution;
-    SparseDirectUMFPACK lu;
-    lu.initialize(blended);
-    Vector<double> field(load);
-    lu.solve(field);
-    Vector<double> residual(n);
-    blended.vmult(residual, field);
-    residual -= load;
-    solution.iterations = 1;
-    solution.residual   = residual.l2_norm() / load.l2_norm();
-
-    double squared = 0, asymmetric = 0;
-    for (unsigned int i = 0; i < n; ++i)
-      for (auto entry = blended.begin(i); entry != blended.end(i); ++entry)
-        {
-          const double transposed = blended.el(entry->column(), i);
-          squared += entry->value() * entry->value();
-          asymmetric +=
-            (entry->value() - transposed) * (entry->value() - transposed);
-        }
-    solution.asymmetry = std::sqrt(asymmetric / squared);
-
-    for (const unsigned int k : {nonlocal_model, local_model})
-      {
-        solution.fields[k] = system.models[k]->new_vector();
-        for (unsigned int i = 0; i < solution.fields[k].size(); ++i)
-          solution.fields[k](i) = field(nodes.node_of_dof[k][i]);
-        solution.fields[k].compress(VectorOperation::insert);
-      }
-    return solution;
+    return solve_blended_system(system, blended, load);
   }
 
 #define LTN_INSTANTIATE(dim) \

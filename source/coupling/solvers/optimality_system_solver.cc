@@ -1,3 +1,4 @@
+#include <ltn/coupling/solvers/energy_blending_solver.h>
 #include <ltn/coupling/solvers/force_blending_solver.h>
 #include <ltn/coupling/solvers/full_space_direct_solver.h>
 #include <ltn/coupling/solvers/full_space_gmres_solver.h>
@@ -42,6 +43,8 @@ namespace ltn
             progress);
         case CouplingMethod::force_blending:
           return solve_force_blending(system);
+        case CouplingMethod::energy_blending:
+          return solve_energy_blending(system);
         case CouplingMethod::automatic:
           break;
       }

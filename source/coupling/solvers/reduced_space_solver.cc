@@ -136,33 +136,7 @@ namespace ltn
               inner.relative_tolerance,
               std::max(loosest_model_tolerance, inner.relative_tolerance)));
         };
-        NormalEquations equations{
-          [&](const unsigned int k,
-              const VectorType  &theta_k,
-              const VectorType  *initial_state) {
-            return hessian.solvers[k]->forward(theta_k, false, initial_state);
-          },
-          [&](const NormalEquations::States &u) {
-            return system.mismatch(u[0], u[1]);
-          },
-          [&](const unsigned int k, const std::vector<double> &d) {
-            return system.mismatch_gradient(k, d);
-          },
-          [&](const NormalEquations::States &gradient) {
-            BlockVectorType g(2);
-            for (const unsigned int k : {0u, 1u})
-              g.block(k) = hessian.solvers[k]->adjoint(gradient[k]);
-            g.collect_sizes();
-            return g;
-          },
-          [&](const unsigned int k) { return system.models[k]->new_vector(); },
-          // sum_q w_q b_qi^2 with w_q > 0: nonzero exactly where some
-          // point reads an unknown with a nonzero coefficient.
-          [&](const unsigned int k) { return system.observation_diagonal(k); },
-          system.alpha,
-          [&](const unsigned int k, const std::vector<VectorType> &controls) {
-            return hessian.solvers[k]->forward(controls);
-          }};
+        NormalEquations equations = hessian.normal_equations();
         // B_l^T W B_l assembled: each local coarse column's entries of E
         // are then a sparse product over the local unknowns, not a pass
         // over every overlap point and back (78 columns took about 4 s of

@@ -4,6 +4,7 @@
 
 #include <ltn/coupling/system/blending_nodes.h>
 #include <ltn/coupling/system/coupling_system.h>
+#include <ltn/problem/blending_function.h>
 
 #include <algorithm>
 #include <tuple>
@@ -34,18 +35,14 @@ namespace ltn
       }
     std::sort(entries.begin(), entries.end());
 
-    const double tolerance = geometry.tolerance();
-    const double delta     = geometry.overlap_width;
-    double       last      = 0;
+    const double              tolerance = geometry.tolerance();
+    const BlendingFunction<1> beta(geometry);
+    double                    last = 0;
     for (const auto &[x, k, i] : entries)
       {
         if (blending.beta.empty() || x - last > tolerance)
           {
-            const Point<1> p(x);
-            blending.beta.push_back(
-              geometry.body.contains(p, tolerance) ?
-                geometry.nonlocal_region().depth(p, delta) / delta :
-                1.);
+            blending.beta.push_back(beta.value(Point<1>(x)));
             last = x;
           }
         blending.node_of_dof[k][i] = blending.beta.size() - 1;

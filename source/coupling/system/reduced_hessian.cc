@@ -31,9 +31,19 @@ namespace ltn
   {
     std::array<TrilinosWrappers::MPI::Vector, 2> z;
     system.mismatch_gradient(d, z[0], z[1]);
+    return adjoint(z);
+  }
+
+
+
+  template <int dim>
+  typename ReducedHessian<dim>::BlockVectorType
+  ReducedHessian<dim>::adjoint(
+    const std::array<TrilinosWrappers::MPI::Vector, 2> &state_gradients) const
+  {
     BlockVectorType g(2);
     for (const unsigned int k : {0u, 1u})
-      g.block(k) = solvers[k]->adjoint(z[k]);
+      g.block(k) = solvers[k]->adjoint(state_gradients[k]);
     g.collect_sizes();
     return g;
   }
@@ -58,6 +68,38 @@ namespace ltn
   {
     dst = reduced_gradient(mismatch(theta, false));
     dst.add(system.alpha, theta);
+  }
+
+
+
+  template <int dim>
+  NormalEquations
+  ReducedHessian<dim>::normal_equations() const
+  {
+    using VectorType = NormalEquations::VectorType;
+    return {
+      [this](const unsigned int k,
+             const VectorType  &theta_k,
+             const VectorType  *initial_state) {
+        return solvers[k]->forward(theta_k, false, initial_state);
+      },
+      [this](const NormalEquations::States &u) {
+        return system.mismatch(u[0], u[1]);
+      },
+      [this](const unsigned int k, const std::vector<double> &d) {
+        return system.mismatch_gradient(k, d);
+      },
+      [this](const NormalEquations::States &gradient) {
+        return adjoint(gradient);
+      },
+      [this](const unsigned int k) { return system.models[k]->new_vector(); },
+      // sum_q w_q b_qi^2 with w_q > 0: nonzero exactly where some point
+      // reads an unknown with a nonzero coefficient.
+      [this](const unsigned int k) { return system.observation_diagonal(k); },
+      system.alpha,
+      [this](const unsigned int k, const std::vector<VectorType> &controls) {
+        return solvers[k]->forward(controls);
+      }};
   }
 
 

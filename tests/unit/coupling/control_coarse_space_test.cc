@@ -24,20 +24,9 @@ using dense_controls::apply;
 namespace
 {
   using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
-  const std::array<unsigned int, 2> block_sizes = {{24, 8}};
-  const unsigned int                n           = 32;
-
-  BlockVectorType
-  new_vector()
-  {
-    return dense_controls::new_vector(block_sizes);
-  }
-
-  BlockVectorType
-  from_function(const std::function<double(unsigned int)> &f)
-  {
-    return dense_controls::from_function(block_sizes, f);
-  }
+  const dense_controls::Blocks blocks{{{24, 8}}};
+  const auto                  &block_sizes = blocks.sizes;
+  const unsigned int           n           = 32;
 
   /**
    * `H = I + sum_j lambda_j s_j s_j^T` with the smooth vectors
@@ -66,7 +55,7 @@ namespace
     std::vector<BlockVectorType> Z;
     for (unsigned int j = 0; j < 3; ++j)
       {
-        BlockVectorType z = from_function(
+        BlockVectorType z = blocks.from_function(
           [j](unsigned int i) { return std::cos(j * M_PI * i / n); });
         for (const auto &q : Z)
           z.add(-(z * q), q);
@@ -98,7 +87,8 @@ TEST_CASE("the balancing coarse level inverts the operator on its span and "
   REQUIRE(coarse.size() == 3);
 
   // On the span: balance(H z) = z.
-  BlockVectorType z = new_vector(), Hz = new_vector(), Bz = new_vector();
+  BlockVectorType z = blocks.new_vector(), Hz = blocks.new_vector(),
+                  Bz = blocks.new_vector();
   z.add(0.3, Z[0]);
   z.add(-1.1, Z[1]);
   z.add(2.0, Z[2]);
@@ -108,11 +98,11 @@ TEST_CASE("the balancing coarse level inverts the operator on its span and "
   CHECK(Bz.l2_norm() < 1e-12 * z.l2_norm());
 
   // Symmetric and positive on two rough vectors.
-  const BlockVectorType x =
-    from_function([](unsigned int i) { return std::sin(2.3 * i + 0.4); });
+  const BlockVectorType x = blocks.from_function(
+    [](unsigned int i) { return std::sin(2.3 * i + 0.4); });
   const BlockVectorType y =
-    from_function([](unsigned int i) { return std::cos(0.7 * i * i); });
-  BlockVectorType Bx = new_vector(), By = new_vector();
+    blocks.from_function([](unsigned int i) { return std::cos(0.7 * i * i); });
+  BlockVectorType Bx = blocks.new_vector(), By = blocks.new_vector();
   coarse.balance(Bx, x, jacobi);
   coarse.balance(By, y, jacobi);
   CHECK(std::abs(x * By - y * Bx) < 1e-12 * x.l2_norm() * By.l2_norm());
@@ -139,12 +129,12 @@ TEST_CASE("the balancing coarse level inverts the operator on its span and "
   std::array<unsigned int, 2> iterations;
   for (const unsigned int variant : {0u, 1u})
     {
-      BlockVectorType           solution = new_vector();
+      BlockVectorType           solution = blocks.new_vector();
       ReductionControl          control(100, 0, 1e-10);
       SolverCG<BlockVectorType> cg(control);
       cg.solve(H_cg, solution, x, variant == 0 ? jacobi_cg : two_level);
       iterations[variant]      = control.last_step();
-      BlockVectorType residual = new_vector();
+      BlockVectorType residual = blocks.new_vector();
       H_op(residual, solution);
       residual -= x;
       CHECK(residual.l2_norm() < 1e-9 * x.l2_norm());

@@ -31,22 +31,11 @@ namespace
 {
   using BlockVectorType = TrilinosWrappers::MPI::BlockVector;
   using Observation     = NormalEquations::Observation;
-  const std::array<unsigned int, 2> block_sizes = {{200, 40}};
-  const unsigned int                n           = 240;
+  const dense_controls::Blocks blocks{{{200, 40}}};
+  const auto                  &block_sizes = blocks.sizes;
+  const unsigned int           n           = 240;
   /** Rows of F: a rough diagonal, three smooth rows, seven dense ones. */
   const unsigned int n_observations = n + 3 + 7;
-
-  BlockVectorType
-  new_vector()
-  {
-    return dense_controls::new_vector(block_sizes);
-  }
-
-  BlockVectorType
-  from_function(const std::function<double(unsigned int)> &f)
-  {
-    return dense_controls::from_function(block_sizes, f);
-  }
 
   /**
    * `F`: `F^T W F` is a rough diagonal plus `10/(1+j) s_j s_j^T` for the
@@ -87,7 +76,7 @@ namespace
     std::vector<BlockVectorType> Z;
     for (unsigned int j = 0; j < 3; ++j)
       {
-        BlockVectorType z = from_function([j](unsigned int i) {
+        BlockVectorType z = blocks.from_function([j](unsigned int i) {
           return i < block_sizes[0] ? std::cos(j * M_PI * i / n) : 0.;
         });
         for (const auto &q : Z)
@@ -97,7 +86,7 @@ namespace
       }
     for (unsigned int i = 0; i < block_sizes[1]; ++i)
       {
-        BlockVectorType z = new_vector();
+        BlockVectorType z = blocks.new_vector();
         z.block(1)(i)     = 1.;
         z.compress(VectorOperation::insert);
         Z.push_back(z);
@@ -122,7 +111,7 @@ namespace
   TrilinosWrappers::MPI::Vector
   zero_state(const unsigned int k)
   {
-    return new_vector().block(k);
+    return blocks.new_vector().block(k);
   }
 
   /**
@@ -170,7 +159,7 @@ namespace
                   },
                   [this](const States &g) {
                     ++n_adjoint;
-                    BlockVectorType x = new_vector();
+                    BlockVectorType x = blocks.new_vector();
                     x.block(0)        = g[0];
                     x.block(1)        = g[1];
                     return x;
@@ -202,7 +191,7 @@ namespace
     BlockVectorType
     rhs(const Observation &d) const
     {
-      BlockVectorType b = new_vector();
+      BlockVectorType b = blocks.new_vector();
       for (const unsigned int k : {0u, 1u})
         b.block(k) = equations.observe_transpose(k, d);
       b *= -1.;
@@ -298,7 +287,7 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
       CHECK(counted.n_forward[1] == block_sizes[1]);
       CHECK(counted.n_adjoint == 0);
 
-      BlockVectorType x         = new_vector();
+      BlockVectorType x         = blocks.new_vector();
       unsigned int    callbacks = 0;
       SolverControl   control(100, 1e-12 * b.l2_norm());
       // The states V x (here x itself) are added to what the states held.
@@ -346,7 +335,7 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
         const DeflationSpace small_blocks(deflation_columns(),
                                           counted.equations,
                                           2048);
-        BlockVectorType      x_small = new_vector();
+        BlockVectorType      x_small = blocks.new_vector();
         SolverControl        small_control(100, 1e-12 * b.l2_norm());
         solve_deflated_cg(counted.equations,
                           small_blocks,
@@ -368,7 +357,7 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
                                              const BlockVectorType &src) {
                                            apply(A, dst, src);
                                          });
-      BlockVectorType          y = new_vector();
+      BlockVectorType          y = blocks.new_vector();
       Observation              observed_start(n_observations, 0.);
       Vector<double>           start = coarse.solve_product(y, d);
       start *= -1.;
@@ -383,7 +372,7 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
       // round-off parts them; the balanced ones lose more).
       {
         SolverControl   five(5, 0.), balanced_five(5, 0.);
-        BlockVectorType x5 = new_vector(), y5 = new_vector();
+        BlockVectorType x5 = blocks.new_vector(), y5 = blocks.new_vector();
         CHECK_THROWS_AS(
           solve_deflated_cg(
             counted.equations, coarse, jacobi, d, x5, five, [](double) {}),
@@ -411,7 +400,7 @@ TEST_CASE("the deflated CG solves the normal equations with the balancing "
         }
         const ControlCoarseSpace::Operator smooth;
       };
-      BlockVectorType w = new_vector();
+      BlockVectorType w = blocks.new_vector();
       plain.solve(DenseOperator{A}, w, b, Jacobi{jacobi});
       std::cout << "deflated CG test, alpha = " << alpha << ": " << iterations
                 << " iterations deflated, " << balanced_control.last_step()
@@ -464,7 +453,7 @@ TEST_CASE("the deflated CG's Ritz values reach the ends of the spectrum of "
   const DeflationSpace coarse(deflation_columns(), counted.equations);
   const Observation    d = CountedEquations::data(
     [](unsigned int q) { return 1 + std::sin(0.9 * q) + 0.01 * q; });
-  BlockVectorType x = new_vector();
+  BlockVectorType x = blocks.new_vector();
   SolverControl   control(100, 1e-12 * counted.rhs(d).l2_norm());
   RitzValues      ritz_values;
   solve_deflated_cg(
@@ -494,7 +483,7 @@ TEST_CASE("the deflated CG's Ritz values reach the ends of the spectrum of "
   // before round-off parts them): so are the Ritz values, which deal.II's
   // CG gives from the steps whose next direction it has formed.
   const DeflationSpace none({}, counted.equations);
-  BlockVectorType      early = new_vector();
+  BlockVectorType      early = blocks.new_vector();
   SolverControl        four(4, 0.);
   RitzValues           early_ritz;
   CHECK_THROWS_AS(solve_deflated_cg(
@@ -513,7 +502,7 @@ TEST_CASE("the deflated CG's Ritz values reach the ends of the spectrum of "
   SolverCG<BlockVectorType> cg(five);
   cg.connect_eigenvalues_slot(
     [&](const std::vector<double> &values) { cg_ritz = values; });
-  BlockVectorType y = new_vector();
+  BlockVectorType y = blocks.new_vector();
   CHECK_THROWS_AS(
     cg.solve(DenseOperator{A}, y, counted.rhs(d), PreconditionIdentity()),
     SolverControl::NoConvergence);
@@ -534,14 +523,14 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
   const Observation        d = CountedEquations::data(
     [](unsigned int q) { return std::cos(0.4 * q * q); });
   const BlockVectorType b = counted.rhs(d);
-  BlockVectorType       x = new_vector();
+  BlockVectorType       x = blocks.new_vector();
   SolverControl         control(200, 1e-10 * b.l2_norm());
   solve_deflated_cg(
     counted.equations, none, no_preconditioner, d, x, control, [](double) {});
   // The start's residual b is one product with F^T W.
   CHECK(counted.n_adjoint == control.last_step() + 1);
 
-  BlockVectorType           y = new_vector();
+  BlockVectorType           y = blocks.new_vector();
   SolverControl             cg_control(200, 1e-10 * b.l2_norm());
   SolverCG<BlockVectorType> cg(cg_control);
   cg.solve(DenseOperator{A}, y, b, PreconditionIdentity());
@@ -557,7 +546,7 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
   // moved the step count by two on one machine (38 against 40).
   for (unsigned int steps = 1; steps <= 4; ++steps)
     {
-      BlockVectorType early = new_vector();
+      BlockVectorType early = blocks.new_vector();
       SolverControl   stop(steps, 0.);
       CHECK_THROWS_AS(solve_deflated_cg(counted.equations,
                                         none,
@@ -567,7 +556,7 @@ TEST_CASE("the deflated CG without coarse columns is CG", "[solvers][unit]")
                                         stop,
                                         [](double) {}),
                       SolverControl::NoConvergence);
-      BlockVectorType           cg_early = new_vector();
+      BlockVectorType           cg_early = blocks.new_vector();
       SolverControl             cg_stop(steps, 0.);
       SolverCG<BlockVectorType> cg_steps(cg_stop);
       CHECK_THROWS_AS(
@@ -622,7 +611,7 @@ TEST_CASE("the deflated CG is the same with block 1's gradients from "
   const auto solve = [&](const NormalEquations &equations,
                          const std::size_t      block_bytes) {
     const DeflationSpace coarse(deflation_columns(), equations, block_bytes);
-    BlockVectorType      x = new_vector();
+    BlockVectorType      x = blocks.new_vector();
     SolverControl        control(100, 1e-12 * b.l2_norm());
     solve_deflated_cg(equations, coarse, jacobi, d, x, control, [](double) {});
     return x;

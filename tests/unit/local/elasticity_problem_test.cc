@@ -191,6 +191,25 @@ namespace
 
 
 
+  /**
+   * Degree @p degree, every face of the box Dirichlet but @p free_face
+   * (none by default).
+   */
+  template <int dim>
+  LocalParameters<dim>
+  dirichlet_box(const unsigned int degree,
+                const unsigned int free_face = numbers::invalid_unsigned_int)
+  {
+    LocalParameters<dim> parameters;
+    parameters.degree = degree;
+    for (unsigned int face = 0; face < 2 * dim; ++face)
+      if (face != free_face)
+        parameters.dirichlet_faces.insert(face);
+    return parameters;
+  }
+
+
+
   template <int dim>
   LocalParameters<dim>
   parse_local_parameters(const std::string &boundaries,
@@ -215,12 +234,9 @@ namespace
   void
   check_linear()
   {
-    const Geometry<dim>  geometry = box_geometry<dim>();
-    LocalParameters<dim> parameters;
-    parameters.degree = 1;
-    for (unsigned int face = 0; face < 2 * dim; ++face)
-      parameters.dirichlet_faces.insert(face);
-    ElasticityProblem<dim> problem(
+    const Geometry<dim>        geometry   = box_geometry<dim>();
+    const LocalParameters<dim> parameters = dirichlet_box<dim>(1);
+    ElasticityProblem<dim>     problem(
       geometry, parameters, lambda, mu, 0.25, MPI_COMM_WORLD);
     CHECK(problem.lambda() == lambda);
     CHECK(problem.mu() == mu);
@@ -249,13 +265,9 @@ namespace
   check_quadratic()
   {
     // Dirichlet everywhere but x+, which carries the varying traction.
-    const Geometry<dim>  geometry = box_geometry<dim>();
-    LocalParameters<dim> parameters;
-    parameters.degree = 2;
-    for (unsigned int face = 0; face < 2 * dim; ++face)
-      if (face != 1)
-        parameters.dirichlet_faces.insert(face);
-    ElasticityProblem<dim> problem(
+    const Geometry<dim>        geometry   = box_geometry<dim>();
+    const LocalParameters<dim> parameters = dirichlet_box<dim>(2, 1);
+    ElasticityProblem<dim>     problem(
       geometry, parameters, lambda, mu, 0.25, MPI_COMM_WORLD);
 
     const Polynomial<dim>                  u(true);
@@ -551,11 +563,9 @@ TEST_CASE("bad Dirichlet components are an InputError", "[elasticity]")
 TEST_CASE("elasticity output has displacement, strain, stress, von Mises",
           "[elasticity]")
 {
-  const Geometry<2>  geometry = box_geometry<2>();
-  LocalParameters<2> parameters;
-  for (unsigned int face = 0; face < 4; ++face)
-    parameters.dirichlet_faces.insert(face);
-  ElasticityProblem<2> problem(
+  const Geometry<2>        geometry   = box_geometry<2>();
+  const LocalParameters<2> parameters = dirichlet_box<2>(1);
+  ElasticityProblem<2>     problem(
     geometry, parameters, lambda, mu, 0.5, MPI_COMM_WORLD);
   const Polynomial<2>              u(false);
   const Functions::ZeroFunction<2> zero(2), no_pressure(1);

@@ -38,7 +38,13 @@ namespace ltn
      * A baseline: force-based blending, one field, each node's equation
      * the models' rows weighted by the blending function (1D).
      */
-    force_blending
+    force_blending,
+    /**
+     * A baseline: energy-based (Arlequin-type) blending, one field
+     * minimizing the sum of the models' energies weighted by the blending
+     * function and its complement (1D).
+     */
+    energy_blending
   };
 
   /** The names of the methods in `Coupling/Method`. */

@@ -3,8 +3,8 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <ltn/coupling/solvers/deflation_space.h>
-#include <ltn/coupling/solvers/normal_equations.h>
 #include <ltn/coupling/solvers/ritz_values.h>
+#include <ltn/coupling/system/normal_equations.h>
 
 #include <functional>
 

@@ -5,7 +5,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <ltn/coupling/solvers/normal_equations.h>
+#include <ltn/coupling/system/normal_equations.h>
 
 #include <array>
 #include <functional>

@@ -10,9 +10,11 @@
 #include <ltn/nonlocal/nonlocal_weak_form_1d.h>
 #include <ltn/nonlocal/particle_diffusion.h>
 #include <ltn/nonlocal/particle_elasticity.h>
+#include <ltn/problem/blending_function.h>
 #include <ltn/problem/geometry.h>
 
 #include <array>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -72,6 +74,12 @@ namespace ltn
     {
       std::vector<double>                                 beta;
       std::array<std::vector<types::global_dof_index>, 2> node_of_dof;
+      /**
+       * For energy-based blending ('Energy-based blending'): each model's
+       * form weighted by `beta` (nonlocal) or `1 - beta` (local), in its
+       * own numbering. Null unless the scene filled them.
+       */
+      std::array<std::shared_ptr<const WeightedForm>, 2> energy;
     } blending_nodes;
   };
 

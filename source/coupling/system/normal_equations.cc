@@ -1,4 +1,4 @@
-#include <ltn/coupling/solvers/normal_equations.h>
+#include <ltn/coupling/system/normal_equations.h>
 
 namespace ltn
 {
