@@ -2,15 +2,16 @@
 their `Coupling/Method`) and the one line a failed run reports."""
 
 # LtN by its reduced-space CG (its iterations are the ones that can grow);
-# the baselines as doc/baseline_couplings.md defines them. Blending exists
-# on the shared 1D mesh only.
+# the baselines as doc/baseline_couplings.md defines them (blending: in 1D
+# on the shared mesh, in 2D on the particle lattice of the whole body).
 COUPLINGS = {"LtN": "reduced space cg",
              "Schwarz": "alternating schwarz",
              "Schwarz + Aitken": "alternating schwarz aitken",
              "force blending": "force blending",
              "energy blending": "energy blending"}
-COUPLINGS_2D = {label: method for label, method in COUPLINGS.items()
-                if not method.endswith("blending")}
+# The LPS axes (poisson_ratio.py): blending is for diffusion only.
+COUPLINGS_LPS = {label: method for label, method in COUPLINGS.items()
+                 if not method.endswith("blending")}
 
 
 def failure_line(error):

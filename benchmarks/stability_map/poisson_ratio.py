@@ -19,14 +19,14 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(here))
 from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
                            pyplot_or_exit, results_rows, run_ltn)
-from couplings import COUPLINGS_2D, failure_line  # noqa: E402
+from couplings import COUPLINGS_LPS, failure_line  # noqa: E402
 
 parser = ltn_argument_parser(os.path.join(here, "runs"))
 parser.add_argument("--plot-only", action="store_true",
                     help="redraw poisson_ratio.png from the CSV, run nothing")
 args = parser.parse_args()
 
-METHODS = COUPLINGS_2D
+METHODS = COUPLINGS_LPS
 POISSON_RATIOS = [0.25, 0.45, 0.49, 0.499]
 # max |u| of the patch scene's solution (1e-5 x^2, 0) on [0, 2] x [0, 1].
 PATCH_MAX = 4e-5

@@ -1,13 +1,14 @@
 #!/usr/bin/env python3
 """Stability maps of the couplings (issue 53): LtN's optimization-based
 coupling and the baselines (alternating Schwarz, plain and with Aitken's
-relaxation; in 1D force-based blending), on the same diffusion scenes (1D,
-or 2D on particles), over the
+relaxation; force- and energy-based blending, in 2D on the particle lattice
+of the whole body), on the same diffusion scenes (1D, or 2D on particles),
+over the
 overlap width in horizons and the horizon in mesh sizes. Per cell and method:
 the quadratic patch test's error (FE_Q(2) on both sides, u = x^2), the L2
 error on the sine scene and its rate over one halving of h at fixed eps/h
 (eps -> 0), the iterations (LtN: reduced-space CG iterations; Schwarz:
-sweeps; blending: 1, a direct solve), force blending's matrix asymmetry,
+sweeps; blending: 1, a direct solve), the 1D blendings' matrix asymmetry,
 and whether the run failed (its one-line message). Writes
 results.csv and maps.png (2D: results_2d.csv, maps_2d.png) next to this
 script.
@@ -24,7 +25,7 @@ here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(here))
 from ltn_benchmark import (REPOSITORY_ROOT, ltn_argument_parser,  # noqa: E402
                            pyplot_or_exit, results_rows, run_ltn)
-from couplings import COUPLINGS, COUPLINGS_2D, failure_line  # noqa: E402
+from couplings import COUPLINGS, failure_line  # noqa: E402
 
 parser = ltn_argument_parser(os.path.join(here, "runs"))
 parser.add_argument("--dimension", type=int, choices=(1, 2), default=1,
@@ -34,7 +35,7 @@ parser.add_argument("--plot-only", action="store_true",
                     help="redraw the maps from the results, run nothing")
 args = parser.parse_args()
 
-METHODS = COUPLINGS if args.dimension == 1 else COUPLINGS_2D
+METHODS = COUPLINGS
 HORIZON_IN_MESH_SIZES = [1, 2, 4, 8]
 OVERLAP_IN_HORIZONS = [0.5, 1, 2, 4, 8]
 # The mesh size of the first level: in 1D the widest overlap (8 horizons

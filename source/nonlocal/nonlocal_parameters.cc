@@ -59,6 +59,7 @@ namespace ltn
                         "only for the others; needs Coupling/Model solvers = "
                         "preconditioned gmres or preconditioned cg), or "
                         "`auto`: assembled below 50,000 particle unknowns "
+                        "(and 2.5e7 unknowns times bonds per particle) "
                         "and in 1D, matrix-free from there on unless the "
                         "scene names direct solvers (the choice is printed; "
                         "doc/prm_guide.md, 'Large scenes').");

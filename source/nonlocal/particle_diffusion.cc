@@ -1,6 +1,10 @@
+#include <deal.II/base/function.h>
+
 #include <ltn/nonlocal/collar_trace.h>
 #include <ltn/nonlocal/lattice_operator.h>
 #include <ltn/nonlocal/particle_diffusion.h>
+
+#include <algorithm>
 
 namespace ltn
 {
@@ -33,17 +37,53 @@ namespace ltn
     const LatticeIndex index = lattice.index(i);
     if (!lattice.inside(index))
       return;
-    row[0].second = 0;
+    row[0].second   = 0;
+    const auto beta = [&](const LatticeIndex &at) {
+      return blending->beta.value(lattice.position(at));
+    };
+    const double beta_i = blending ? beta(index) : 1.;
+    // Bond j's coefficient in the row: 2 a_j unblended and blended by
+    // force, a_j (beta_i + beta_j) blended by energy.
+    // A column appears once in a row: the Laplacian's nearest neighbours
+    // are bonds of the stencil too, and their weights add.
+    const auto add = [&](const LatticeIndex &at, const double weight) {
+      const auto j = lattice.number(at);
+      Assert(j != ParticleLattice<dim>::invalid, ExcInternalError());
+      const auto entry =
+        std::find_if(row.begin() + 1, row.end(), [j](const auto &e) {
+          return e.first == j;
+        });
+      if (entry == row.end())
+        row.emplace_back(j, -weight);
+      else
+        entry->second -= weight;
+      row[0].second += weight;
+    };
     for (std::size_t k = 0; k < offsets.size(); ++k)
       {
         LatticeIndex neighbour = index;
         for (unsigned int d = 0; d < dim; ++d)
           neighbour[d] += offsets[k][d];
-        const auto j = lattice.number(neighbour);
-        Assert(j != ParticleLattice<dim>::invalid, ExcInternalError());
-        row.emplace_back(j, -2 * coefficients[k]);
-        row[0].second += 2 * coefficients[k];
+        add(neighbour,
+            !blending ? 2 * coefficients[k] :
+            blending->kind == LatticeBlending::force ?
+                        beta_i * 2 * coefficients[k] :
+                        coefficients[k] * (beta_i + beta(neighbour)));
       }
+    if (!blending)
+      return;
+    // The classical Laplacian on the nearest neighbours, weighted by
+    // 1 - beta_i (force) or by the bond's 1 - (beta_i + beta_k) / 2.
+    for (unsigned int d = 0; d < dim; ++d)
+      for (const int step : {-1, 1})
+        {
+          LatticeIndex neighbour = index;
+          neighbour[d] += step;
+          const double local_weight = blending->kind == LatticeBlending::force ?
+                                        1 - beta_i :
+                                        1 - 0.5 * (beta_i + beta(neighbour));
+          add(neighbour, local_weight / (spacing * spacing));
+        }
   }
 
 
@@ -90,6 +130,27 @@ namespace ltn
     model.symmetric_free_block = true;
 
     this->assemble_load(rhs, volume_data);
+  }
+
+
+
+  template <int dim>
+  void
+  ParticleDiffusion<dim>::assemble_blended(const LatticeBlending        kind,
+                                           const BlendingFunction<dim> &beta,
+                                           const Function<dim> &nonlocal_rhs,
+                                           const Function<dim> &local_rhs,
+                                           const Function<dim> &volume_data)
+  {
+    blending.emplace(Blending{kind, beta});
+    // The rows are the blended ones; their load too.
+    const ScalarFunctionFromFunctionObject<dim> load([&](const Point<dim> &x) {
+      const double b = beta.value(x);
+      return b * nonlocal_rhs.value(x) + (1 - b) * local_rhs.value(x);
+    });
+    assemble(load, volume_data, false);
+    // Force blending's rows differ by bond where beta changes.
+    model.symmetric_free_block = kind == LatticeBlending::energy;
   }
 
 

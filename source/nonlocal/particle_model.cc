@@ -153,6 +153,18 @@ namespace ltn
             typename Stencil,
             unsigned int n_dofs,
             unsigned int n_field>
+  std::size_t
+  ParticleModel<dim, Stencil, n_dofs, n_field>::bonds_per_particle() const
+  {
+    return stencil.offsets().size();
+  }
+
+
+
+  template <int dim,
+            typename Stencil,
+            unsigned int n_dofs,
+            unsigned int n_field>
   DofRole
   ParticleModel<dim, Stencil, n_dofs, n_field>::role(
     const LatticeIndex &index) const

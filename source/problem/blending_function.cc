@@ -15,10 +15,14 @@ namespace ltn
   double
   BlendingFunction<dim>::value(const Point<dim> &p, const unsigned int) const
   {
+    // Beyond the body (the collars that carry the boundary data), the
+    // weight of the nearest point of the body: a face crossed adds no kink.
+    Point<dim> nearest = p;
+    for (unsigned int d = 0; d < dim; ++d)
+      nearest[d] =
+        std::clamp(p[d], geometry.body.lower[d], geometry.body.upper[d]);
     const double delta = geometry.overlap_width;
-    return geometry.body.contains(p, geometry.tolerance()) ?
-             geometry.nonlocal_region().depth(p, delta) / delta :
-             1.;
+    return geometry.nonlocal_region().depth(nearest, delta) / delta;
   }
 
 

@@ -52,12 +52,18 @@ namespace ltn
       const MPI_Comm                      communicator;
       const Kernel                        kernel;
       const DiffusionData::Functions<dim> data;
-      const double                        eps                = kernel.horizon();
-      const double                        collar_depth       = eps;
-      const std::string                   nonlocal_file      = "nonlocal_field";
-      const std::string                   local_file         = "local_field";
-      const std::string                   dofs_label         = "nonlocal dofs";
-      static constexpr bool               grouped_collection = false;
+      /**
+       * With a blending on the particle lattice (2D, 3D): the layout of the
+       * nonlocal region and the overlap, for the blending function; the
+       * level's own geometry is the whole body. Null otherwise.
+       */
+      const Geometry<dim>  *blended_layout;
+      const double          eps                = kernel.horizon();
+      const double          collar_depth       = eps;
+      const std::string     nonlocal_file      = "nonlocal_field";
+      const std::string     local_file         = "local_field";
+      const std::string     dofs_label         = "nonlocal dofs";
+      static constexpr bool grouped_collection = false;
 
       /** The level's nonlocal model on @p layout (kept alive by the caller). */
       std::unique_ptr<Nonlocal>
@@ -91,6 +97,15 @@ namespace ltn
       {
         if constexpr (dim == 1)
           nonlocal.assemble(*data.nonlocal_rhs, *data.volume_constraint_data);
+        else if (blended_layout)
+          nonlocal.assemble_blended(coupling_parameters.method ==
+                                        CouplingMethod::force_blending ?
+                                      LatticeBlending::force :
+                                      LatticeBlending::energy,
+                                    BlendingFunction<dim>(*blended_layout),
+                                    *data.nonlocal_rhs,
+                                    *data.local_rhs,
+                                    *data.volume_constraint_data);
         else
           nonlocal.assemble(*data.nonlocal_rhs,
                             *data.volume_constraint_data,
@@ -220,18 +235,17 @@ namespace ltn
                 "surrogate extension",
                 "`diagonal` in 1D (the surrogate lives on the particle "
                 "lattice of 2D and 3D models)");
-    coupling_parameters.check_dimension(dim);
+    coupling_parameters.check_physics(true);
     coupling_parameters.check_operator(nonlocal_parameters.operator_storage ==
                                          OperatorStorage::matrix_free,
                                        geometry.has_local_model() &&
                                          geometry.has_nonlocal_model());
-    // Blending identifies the two meshes' nodes by position.
+    // Blending in 1D identifies the two meshes' nodes by position.
     const CouplingMethod method   = coupling_parameters.method;
-    const bool           blending = method == CouplingMethod::force_blending ||
-                          method == CouplingMethod::energy_blending;
-    const std::string method_name =
+    const bool           blending = coupling_parameters.blending();
+    const std::string    method_name =
       selection_name(coupling_method_names(), method);
-    check_input(!blending ||
+    check_input(!blending || dim > 1 ||
                   nonlocal_parameters.degree == local_parameters.degree,
                 "Local model/Finite element degree",
                 std::to_string(local_parameters.degree),
@@ -240,19 +254,44 @@ namespace ltn
                   method_name +
                   ": its field lives on the nodes both meshes "
                   "share");
-    check_input(!blending || local_parameters.adaptive_cycles == 0 ||
+    check_input(!blending || dim > 1 || local_parameters.adaptive_cycles == 0 ||
                   !geometry.has_nonlocal_model(),
                 "Local model/Adaptive refinement cycles",
                 std::to_string(local_parameters.adaptive_cycles),
                 "0 with " + method_name +
                   ": its field lives on the nodes both meshes share");
-    check_input(method != CouplingMethod::energy_blending ||
-                  local_parameters.dirichlet_faces.size() == 2 * dim,
-                "Local model/Dirichlet boundaries",
-                std::to_string(local_parameters.dirichlet_faces.size()) +
-                  " faces",
-                "every face of the body with energy blending (its weighted "
-                "local energy carries no boundary flux)");
+    check_input(
+      (method != CouplingMethod::energy_blending && !(blending && dim > 1)) ||
+        local_parameters.dirichlet_faces.size() == 2 * dim,
+      "Local model/Dirichlet boundaries",
+      std::to_string(local_parameters.dirichlet_faces.size()) + " faces",
+      "every face of the body with " + method_name +
+        (dim == 1 ? " (its weighted local energy carries no "
+                    "boundary flux)" :
+                    " (on the particle lattice of the body, whose "
+                    "collar carries the boundary data)"));
+    // On the lattice, blending replaces the particle model's rows: they
+    // must be assembled, and solved by a factorization (force blending's
+    // are not symmetric).
+    check_input(!blending || dim == 1 ||
+                  nonlocal_parameters.operator_storage !=
+                    OperatorStorage::matrix_free,
+                "Nonlocal model/Operator",
+                "matrix-free",
+                "`assembled` or `auto` with " + method_name +
+                  " (its rows are not the shared stencil's)");
+    check_input(!blending || dim == 1 ||
+                  !coupling_parameters.model_solvers.iterative(),
+                "Coupling/Model solvers",
+                selection_name(model_solver_names(),
+                               coupling_parameters.model_solvers.kind),
+                "`direct` or `auto` with " + method_name +
+                  " (one factorization of the blended rows)");
+    check_input(!blending || !geometry.automatic_region,
+                "Geometry/Nonlocal regions",
+                "auto",
+                "boxes with " + method_name +
+                  " (its blending function needs the region)");
     check_input(local_parameters.dirichlet_components.empty(),
                 "Local model/Dirichlet components",
                 local_parameters.dirichlet_components_text,
@@ -267,6 +306,14 @@ namespace ltn
       this->start_model_adaptivity({}, eps0, 3 * eps0);
     geometry.validate(h0, eps0, eps0);
     local_parameters.validate(geometry);
+    if (blending && dim > 1)
+      {
+        // One field on the lattice of the whole body; the region and the
+        // overlap stay in the blending function's layout.
+        blended_layout  = geometry;
+        geometry.models = Geometry<dim>::Models::nonlocal_only;
+        geometry.set_nonlocal_boxes({geometry.body});
+      }
 
     if constexpr (dim > 1)
       if (geometry.has_nonlocal_model())
@@ -341,7 +388,8 @@ namespace ltn
                                    kernel,
                                    level_functions<dim>(problem_data,
                                                         kernel,
-                                                        h)};
+                                                        h),
+                                   blended_layout ? &*blended_layout : nullptr};
       });
   }
 

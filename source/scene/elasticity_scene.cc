@@ -385,7 +385,7 @@ namespace ltn
       // What only diffusion scenes use must not be set here.
       DiffusionData::check_unused(prm);
     });
-    coupling_parameters.check_dimension(dim);
+    coupling_parameters.check_physics(false);
     coupling_parameters.check_operator(nonlocal_parameters.operator_storage ==
                                          OperatorStorage::matrix_free,
                                        geometry.has_local_model() &&

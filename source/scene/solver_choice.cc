@@ -6,17 +6,24 @@ namespace ltn
   choose_solvers(const CouplingParameters     &coupling,
                  const OperatorStorage         storage,
                  const types::global_dof_index n_particle_unknowns,
+                 const std::size_t             bonds_per_particle,
                  const unsigned int            dim,
                  const bool                    coupled)
   {
     const bool scalable =
-      dim > 1 && n_particle_unknowns >= scalable_from_unknowns;
+      dim > 1 &&
+      (n_particle_unknowns >= scalable_from_unknowns ||
+       static_cast<double>(n_particle_unknowns) * bonds_per_particle >=
+         scalable_from_bonds);
     const ModelSolverKind named_solvers = coupling.model_solvers.kind;
     const CouplingMethod  named_method  = coupling.method;
     // The direct paths a scene can name; auto choices do not leave them.
+    // A blending is one factorized system (on the lattice: the particle
+    // model's rows blended).
     const bool named_direct =
       named_solvers == ModelSolverKind::direct ||
-      (coupled && named_method == CouplingMethod::full_space_direct);
+      (coupled && named_method == CouplingMethod::full_space_direct) ||
+      coupling.blending();
 
     SolverChoice choice;
     choice.coupling = coupling;
@@ -46,8 +53,7 @@ namespace ltn
     if (named_solvers == ModelSolverKind::automatic)
       {
         const bool iterative =
-          (choice.matrix_free || scalable) &&
-          !(coupled && named_method == CouplingMethod::full_space_direct);
+          (choice.matrix_free || scalable) && !named_direct;
         solvers.kind = iterative ? ModelSolverKind::preconditioned_cg :
                                    ModelSolverKind::direct;
         // The finite element model's mesh is coarse wherever the coupling
@@ -82,10 +88,11 @@ namespace ltn
       (coupled && choice.coupling.method == CouplingMethod::full_space_direct);
     if (scalable && factorized)
       choice.note = "the particle model's " +
-                    std::to_string(n_particle_unknowns) +
-                    " unknowns are factorized by a direct solver; for scenes "
-                    "this large, doc/prm_guide.md (\"Large scenes\") gives "
-                    "settings that scale";
+                    std::to_string(n_particle_unknowns) + " unknowns (" +
+                    std::to_string(bonds_per_particle) +
+                    " bonds per particle) are factorized by a direct "
+                    "solver; for scenes this large, doc/prm_guide.md "
+                    "(\"Large scenes\") gives settings that scale";
     // What the scene named, and what auto made of the rest, must agree.
     choice.coupling.check_operator(choice.matrix_free, coupled);
     return choice;

@@ -171,3 +171,39 @@ TEST_CASE("energy blending in 1D: the field is constant where the data are "
       CHECK(level.coupled_errors.linf < 1e-12);
     }
 }
+
+
+
+TEST_CASE("blending on the 2D particle lattice: force blending passes the "
+          "patch tests, energy blending carries ghost forces",
+          "[blending][patch][particles]")
+{
+  // One field on the particles of the whole body, the nonlocal rows blended
+  // with the 5-point Laplacian (doc/baseline_couplings.md, 'Blending').
+  const std::vector<std::string> quadratic = {
+    "Diffusion data/Exact solution=x^2 + x*y - 0.5*y^2 + x",
+    "Diffusion data/Nonlocal right-hand side=-1",
+    "Diffusion data/Local right-hand side=-1"};
+  for (const auto &[sets, max_u] :
+       {std::pair{std::vector<std::string>{}, 4.}, std::pair{quadratic, 7.5}})
+    {
+      auto force = sets;
+      force.push_back("Coupling/Method=force blending");
+      const SceneRun run   = run_scene("diffusion_2d_patch", force);
+      const auto    &level = run.summary.levels.back();
+      INFO("force blending: max error " << level.coupled_errors.linf);
+      REQUIRE(level.has_errors);
+      // Each row a convex combination of two consistent operators.
+      CHECK(level.coupled_errors.linf <= 1e-10 * max_u);
+    }
+
+  auto energy = std::vector<std::string>{"Coupling/Method=energy blending"};
+  const SceneRun run   = run_scene("diffusion_2d_patch", energy);
+  const auto    &level = run.summary.levels.back();
+  INFO("energy blending: max error " << level.coupled_errors.linf);
+  REQUIRE(level.has_errors);
+  // The ghost forces where beta bends, far above round-off: 6.3e-3 (u = x +
+  // 2y, eps = 3h = 0.1875, delta = 0.25), concentrated in the band.
+  CHECK(level.coupled_errors.linf > 1e-3);
+  CHECK(level.coupled_errors.linf < 3e-2);
+}

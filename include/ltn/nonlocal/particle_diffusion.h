@@ -9,8 +9,10 @@
 #include <ltn/nonlocal/lattice_stencil.h>
 #include <ltn/nonlocal/particle_lattice.h>
 #include <ltn/nonlocal/particle_model.h>
+#include <ltn/problem/blending_function.h>
 #include <ltn/problem/geometry.h>
 
+#include <optional>
 #include <vector>
 
 namespace ltn
@@ -34,6 +36,13 @@ namespace ltn
    * lattice) and reads its ghosts: the particles its rows reach, out to the
    * full horizon.
    */
+  /** The blending baselines on the lattice (ParticleDiffusion::blend()). */
+  enum class LatticeBlending
+  {
+    force,
+    energy
+  };
+
   template <int dim>
   class ParticleDiffusion : public ParticleModel<dim, LatticeStencil<dim>, 1, 1>
   {
@@ -56,11 +65,43 @@ namespace ltn
              const Function<dim> &volume_data,
              const bool           matrix_free = false);
 
+    /**
+     * For the blending baselines on a lattice that fills the body
+     * (doc/baseline_couplings.md, 'Blending'): assemble, in place of
+     * `-L_h`, one field's rows that blend it with the classical Laplacian
+     * `Lambda u(x_i) = sum_{k in N(i)} (u_i - u_k) / h^2` on the nearest
+     * neighbours by the weight @p beta, as @p kind says:
+     *
+     * - force: `beta_i (-L_h u)_i + (1 - beta_i) (Lambda u)_i` (not
+     *   symmetric where beta changes);
+     * - energy: `sum_j a_j (beta_i + beta_j') (u_i - u_j') + sum_{k in
+     *   N(i)} (1 - (beta_i + beta_k) / 2) (u_i - u_k) / h^2`, the gradient
+     *   of the blended energy over `h^dim` (symmetric),
+     *
+     * with the load `beta f_n + (1 - beta) f_l` of @p nonlocal_rhs and
+     * @p local_rhs and the volume constraint @p volume_data. Assembled (a
+     * matrix-free operator holds the shared stencil only).
+     */
+    void
+    assemble_blended(const LatticeBlending        kind,
+                     const BlendingFunction<dim> &beta,
+                     const Function<dim>         &nonlocal_rhs,
+                     const Function<dim>         &local_rhs,
+                     const Function<dim>         &volume_data);
+
     /** The row of particle @p i of the closed model. */
     void
     particle_rows(const types::global_dof_index i, ParticleRows &rows) const;
 
   private:
+    /** What assemble_blended() blends the rows with; none: nothing. */
+    struct Blending
+    {
+      LatticeBlending       kind;
+      BlendingFunction<dim> beta;
+    };
+    std::optional<Blending> blending;
+
     using Base::lattice;
     using Base::model;
     using Base::spacing;

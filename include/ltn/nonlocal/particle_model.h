@@ -59,6 +59,10 @@ namespace ltn
     const ParticleLattice<dim> &
     get_lattice() const;
 
+    /** The bonds of a particle with a complete neighbourhood. */
+    std::size_t
+    bonds_per_particle() const;
+
     /** The role of the field components of the particle at @p index. */
     DofRole
     role(const LatticeIndex &index) const;

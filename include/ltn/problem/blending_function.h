@@ -16,9 +16,10 @@ namespace ltn
   /**
    * The weight of the blending couplings (doc/baseline_couplings.md, 'The
    * blending function and the shared unknowns'): `beta = min(1, s / delta)`,
-   * `s` the depth in the nonlocal region and `delta` the overlap width; 1 on
-   * the shrunk region and beyond the body (where the nonlocal model's volume
-   * constraint holds), 0 off `Omega_n`, linear across the overlap band.
+   * `s` the depth in the nonlocal region and `delta` the overlap width: 1 on
+   * the shrunk region, 0 off `Omega_n`, linear across the overlap band; beyond
+   * the body (the collars of the volume constraint), the value at the
+   * nearest point of the body.
    */
   template <int dim>
   class BlendingFunction : public Function<dim>

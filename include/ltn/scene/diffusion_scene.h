@@ -6,6 +6,7 @@
 #include <ltn/problem/diffusion_data.h>
 #include <ltn/scene/scene.h>
 
+#include <optional>
 #include <string>
 
 namespace ltn
@@ -44,5 +45,11 @@ namespace ltn
     using Scene<dim>::coupling_parameters;
 
     DiffusionData problem_data;
+    /**
+     * With a blending on the particle lattice (2D, 3D): the layout as the
+     * scene gives it (nonlocal region, overlap), for the blending function;
+     * the scene's geometry is then the whole body, nonlocal only.
+     */
+    std::optional<Geometry<dim>> blended_layout;
   };
 } // namespace ltn

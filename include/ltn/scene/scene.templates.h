@@ -20,9 +20,28 @@
 
 #include <iomanip>
 #include <memory>
+#include <type_traits>
 
 namespace ltn
 {
+  namespace internal
+  {
+    /**
+     * The bonds per particle of the nonlocal model @p nonlocal, for
+     * choose_solvers(): its stencil's on a particle lattice; none for the
+     * 1D weak form, which is always factorized.
+     */
+    template <typename Nonlocal>
+    std::size_t
+    bonds_per_particle(const Nonlocal &nonlocal)
+    {
+      if constexpr (std::is_same_v<Nonlocal, NonlocalWeakForm1D>)
+        return 0;
+      else
+        return nonlocal.bonds_per_particle();
+    }
+  } // namespace internal
+
   template <int dim>
   template <typename PhysicsOfLevel>
   RunSummary
@@ -233,6 +252,9 @@ namespace ltn
               choose_solvers(physics.coupling(),
                              nonlocal_parameters.operator_storage,
                              nonlocal ? nonlocal->get_model().owned.size() : 0,
+                             nonlocal ?
+                               internal::bonds_per_particle(*nonlocal) :
+                               0,
                              dim,
                              nonlocal && local);
             if (!choice.description.empty())
@@ -469,6 +491,7 @@ namespace ltn
           choose_solvers(physics.coupling(),
                          nonlocal_parameters.operator_storage,
                          reference.nonlocal->get_model().owned.size(),
+                         internal::bonds_per_particle(*reference.nonlocal),
                          dim,
                          false);
         physics.assemble(*reference.nonlocal,

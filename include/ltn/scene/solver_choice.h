@@ -40,10 +40,20 @@ namespace ltn
   constexpr types::global_dof_index scalable_from_unknowns = 50000;
 
   /**
+   * Nor do fewer unknowns with many bonds each (a wide horizon in particle
+   * spacings): from this many unknowns times bonds per particle on, the
+   * assembled matrix holds about as many entries and its factors many
+   * times more, so the scalable path is taken whatever the unknowns.
+   */
+  constexpr double scalable_from_bonds = 2.5e7;
+
+  /**
    * Resolve the `auto` choices of @p coupling and @p storage for a level
-   * whose particle model has @p n_particle_unknowns unknowns in @p dim
-   * dimensions (none: 0), coupled to a local model or alone (@p coupled).
-   * Below scalable_from_unknowns, and in 1D, the exact path: the operator
+   * whose particle model has @p n_particle_unknowns unknowns and
+   * @p bonds_per_particle bonds per particle in @p dim dimensions (none:
+   * 0), coupled to a local model or alone (@p coupled). Below
+   * scalable_from_unknowns and scalable_from_bonds, and in 1D, the exact
+   * path: the operator
    * assembled, the models factorized, the full-space direct system. From
    * there on the scalable one: matrix-free, preconditioned CG in the
    * particle model with the finite element model factorized, the
@@ -57,6 +67,7 @@ namespace ltn
   choose_solvers(const CouplingParameters     &coupling,
                  const OperatorStorage         storage,
                  const types::global_dof_index n_particle_unknowns,
+                 const std::size_t             bonds_per_particle,
                  const unsigned int            dim,
                  const bool                    coupled);
 } // namespace ltn

@@ -45,7 +45,7 @@ namespace ltn
         "and one adjoint solve per model), or `auto`: reduced space cg "
         "where the particle model is solved iteratively "
         "(Model solvers `auto` from 50,000 particle unknowns "
-        "on, or named), where its operator is matrix-free, "
+        "or 2.5e7 unknowns times bonds on, or named), where its operator is matrix-free, "
         "or with Time standalone solves; full space direct "
         "otherwise (doc/prm_guide.md, 'Large scenes'). Baselines, "
         "not LtN's optimization: `alternating schwarz` (each model "
@@ -167,24 +167,25 @@ namespace ltn
         "the two models alone costs with the same solvers and tolerances, "
         "the reference of benchmarks/scaling. The extra solves count in "
         "the solve's wall time.");
-      prm.declare_entry("Model solvers",
-                        "auto",
-                        selection_pattern(model_solver_names()),
-                        "How each model's equations are solved, inside the "
-                        "reduced-space CG or alone: `direct` (sparse LU of "
-                        "the assembled matrix), `preconditioned gmres` "
-                        "(GMRES with algebraic multigrid on the finite "
-                        "element matrix, or on the nonlocal model's "
-                        "nearest-neighbour surrogate after eliminating the "
-                        "dilatation; works matrix-free) or `preconditioned "
-                        "cg` (the same, but CG on the particle model's free "
-                        "unknowns, whose block is symmetric positive "
-                        "definite, for forward and adjoint solves alike; "
-                        "the finite element model keeps GMRES), or `auto`: "
-                        "preconditioned cg with the finite element model "
-                        "factorized from 50,000 particle unknowns on (2D, "
-                        "3D) or with a matrix-free operator, unless the "
-                        "Method is full space direct; direct otherwise.");
+      prm.declare_entry(
+        "Model solvers",
+        "auto",
+        selection_pattern(model_solver_names()),
+        "How each model's equations are solved, inside the "
+        "reduced-space CG or alone: `direct` (sparse LU of "
+        "the assembled matrix), `preconditioned gmres` "
+        "(GMRES with algebraic multigrid on the finite "
+        "element matrix, or on the nonlocal model's "
+        "nearest-neighbour surrogate after eliminating the "
+        "dilatation; works matrix-free) or `preconditioned "
+        "cg` (the same, but CG on the particle model's free "
+        "unknowns, whose block is symmetric positive "
+        "definite, for forward and adjoint solves alike; "
+        "the finite element model keeps GMRES), or `auto`: "
+        "preconditioned cg with the finite element model "
+        "factorized from 50,000 particle unknowns or 2.5e7 "
+        "unknowns times bonds on (2D, 3D) or with a matrix-free operator, unless the "
+        "Method is full space direct; direct otherwise.");
       prm.declare_entry("Local model solver",
                         "same",
                         Patterns::Selection("same|direct"),
@@ -308,21 +309,23 @@ namespace ltn
 
 
 
-  void
-  CouplingParameters::check_dimension(const unsigned int dim) const
+  bool
+  CouplingParameters::blending() const
   {
-    for (const CouplingMethod blending :
-         {CouplingMethod::force_blending, CouplingMethod::energy_blending})
-      {
-        const std::string name =
-          selection_name(coupling_method_names(), blending);
-        check_input(dim == 1 || method != blending,
-                    "Coupling/Method",
-                    name,
-                    "a method of 2D and 3D scenes: " + name +
-                      " is implemented in 1D only (on the shared mesh of "
-                      "both models)");
-      }
+    return method == CouplingMethod::force_blending ||
+           method == CouplingMethod::energy_blending;
+  }
+
+
+
+  void
+  CouplingParameters::check_physics(const bool diffusion) const
+  {
+    check_input(diffusion || !blending(),
+                "Coupling/Method",
+                selection_name(coupling_method_names(), method),
+                "a method of elasticity scenes: the blendings couple "
+                "nonlocal diffusion with the Laplacian only");
   }
 
 

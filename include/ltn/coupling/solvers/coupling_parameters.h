@@ -63,12 +63,16 @@ namespace ltn
     void
     parse_parameters(ParameterHandler &prm);
 
+    /** Is the method a blending (force or energy)? */
+    bool
+    blending() const;
+
     /**
-     * An InputError if the method does not exist in @p dim dimensions
-     * (force blending: 1D only).
+     * An InputError if the method does not exist for the physics: the
+     * blendings couple nonlocal diffusion with the Laplacian only.
      */
     void
-    check_dimension(const unsigned int dim) const;
+    check_physics(const bool diffusion) const;
 
     /**
      * These parameters at a level of an LPS scene whose overlap is

@@ -15,10 +15,8 @@ namespace ltn
    * (doc/baseline_couplings.md, 'Force-based blending'): the nodes of the
    * two models' meshes identified by position (both meshes have the same
    * mesh size and degree, so where they overlap their nodes coincide), and
-   * per node the blending weight `beta = min(1, s / delta)`, `s` the depth
-   * in the nonlocal region and `delta` the overlap width: 1 on the shrunk
-   * region `S` and beyond the body (the volume constraint), 0 off
-   * `Omega_n`, linear across the overlap band. Serial, as 1D scenes are.
+   * per node the blending weight of BlendingFunction. Serial, as 1D scenes
+   * are.
    */
   void
   add_blending_nodes(OverlapQuadrature<1>     &overlap,
