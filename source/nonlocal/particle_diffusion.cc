@@ -42,23 +42,25 @@ namespace ltn
       return blending->beta.value(lattice.position(at));
     };
     const double beta_i = blending ? beta(index) : 1.;
+    // The bond to the particle at @p at, with @p weight; the stencil's
+    // bonds are distinct, a later bond (@p repeated) may be one of them.
+    const auto add =
+      [&](const LatticeIndex &at, const double weight, const bool repeated) {
+        const auto j = lattice.number(at);
+        Assert(j != ParticleLattice<dim>::invalid, ExcInternalError());
+        const auto entry =
+          repeated ? std::find_if(row.begin() + 1,
+                                  row.end(),
+                                  [j](const auto &e) { return e.first == j; }) :
+                     row.end();
+        if (entry == row.end())
+          row.emplace_back(j, -weight);
+        else
+          entry->second -= weight;
+        row[0].second += weight;
+      };
     // Bond j's coefficient in the row: 2 a_j unblended and blended by
     // force, a_j (beta_i + beta_j) blended by energy.
-    // A column appears once in a row: the Laplacian's nearest neighbours
-    // are bonds of the stencil too, and their weights add.
-    const auto add = [&](const LatticeIndex &at, const double weight) {
-      const auto j = lattice.number(at);
-      Assert(j != ParticleLattice<dim>::invalid, ExcInternalError());
-      const auto entry =
-        std::find_if(row.begin() + 1, row.end(), [j](const auto &e) {
-          return e.first == j;
-        });
-      if (entry == row.end())
-        row.emplace_back(j, -weight);
-      else
-        entry->second -= weight;
-      row[0].second += weight;
-    };
     for (std::size_t k = 0; k < offsets.size(); ++k)
       {
         LatticeIndex neighbour = index;
@@ -68,7 +70,8 @@ namespace ltn
             !blending ? 2 * coefficients[k] :
             blending->kind == LatticeBlending::force ?
                         beta_i * 2 * coefficients[k] :
-                        coefficients[k] * (beta_i + beta(neighbour)));
+                        coefficients[k] * (beta_i + beta(neighbour)),
+            false);
       }
     if (!blending)
       return;
@@ -82,7 +85,9 @@ namespace ltn
           const double local_weight = blending->kind == LatticeBlending::force ?
                                         1 - beta_i :
                                         1 - 0.5 * (beta_i + beta(neighbour));
-          add(neighbour, local_weight / (spacing * spacing));
+          // The nearest neighbours are bonds of the stencil too: their
+          // weights add.
+          add(neighbour, local_weight / (spacing * spacing), true);
         }
   }
 
